@@ -1,0 +1,65 @@
+# Nasaq: `make run` starts the IDE, `make test` runs every suite. Both install what is missing first.
+SHELL := /bin/bash
+.DEFAULT_GOAL := help
+
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+PY_STAMP := $(VENV)/.installed
+NODE_STAMP := node_modules/.installed
+DIST := frontend/dist/index.html
+FRONTEND_SOURCES := $(shell find frontend/src frontend/public -type f 2>/dev/null) \
+	frontend/index.html frontend/package.json frontend/tsconfig.json frontend/vite.config.ts
+
+.PHONY: help install run test chromium lock clean
+
+help:
+	@echo "make run    install what is missing, then serve the IDE at http://127.0.0.1:8000"
+	@echo "make test   install what is missing (incl. Chromium), then run every test suite"
+	@echo "make install | make lock (re-pin Python dependencies) | make clean"
+
+install: $(PY_STAMP) $(NODE_STAMP) $(DIST)
+
+$(PY_STAMP): backend/pyproject.toml backend/requirements.lock
+	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 11))' \
+		|| { echo "Nasaq needs Python 3.11 or newer as '$(PYTHON)'"; exit 1; }
+	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check \
+		--constraint backend/requirements.lock --editable 'backend[dev]'
+	@touch $@
+
+$(NODE_STAMP): package.json package-lock.json frontend/package.json
+	npm ci --no-audit --no-fund
+	@touch $@
+
+$(DIST): $(NODE_STAMP) $(FRONTEND_SOURCES)
+	npm run build -w frontend
+	@touch $@
+
+run: install
+	$(BIN)/nasaq serve
+
+test: install chromium
+	$(BIN)/python tests/run_suites.py
+
+# The browser tests drive Debian's Chromium; Playwright's own browser download is not used.
+chromium:
+	@if [ ! -x /usr/bin/chromium ]; then \
+		echo "Installing Debian's chromium for the browser tests"; \
+		sudo=""; [ "$$(id -u)" = 0 ] || sudo=sudo; \
+		$$sudo apt-get update -q && \
+		DEBIAN_FRONTEND=noninteractive $$sudo apt-get install -y -q chromium; \
+	fi
+
+lock:
+	$(PYTHON) -m venv /tmp/nasaq-lock && /tmp/nasaq-lock/bin/pip install --quiet pip-tools
+	cd backend && { \
+		echo "# Pinned versions of every Python dependency of nasaq (runtime, the postgres extra, dev tools)."; \
+		echo "# Installed as constraints by \`make install\`; regenerate with \`make lock\`."; \
+		/tmp/nasaq-lock/bin/pip-compile --quiet --strip-extras --all-extras --no-header \
+			--no-emit-find-links --output-file - pyproject.toml; \
+	} > requirements.lock.new && mv requirements.lock.new requirements.lock
+	@echo "backend/requirements.lock updated: review the diff, then make install"
+
+clean:
+	rm -rf $(VENV) node_modules frontend/node_modules frontend/dist .reports tests/e2e/.output

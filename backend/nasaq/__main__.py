@@ -1,0 +1,3 @@
+from nasaq.cli import main
+
+raise SystemExit(main())

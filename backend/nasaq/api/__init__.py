@@ -1,0 +1,1 @@
+"""The HTTP side: the FastAPI application, its routers and how errors reach the client."""

@@ -1,0 +1,55 @@
+"""The FastAPI application: API under ``/api``, docs at ``/api/docs``, the IDE at ``/``."""
+
+from __future__ import annotations
+
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+
+from fastapi import APIRouter, FastAPI
+from fastapi.middleware.gzip import GZipMiddleware
+
+from nasaq import __version__
+from nasaq.api import health, projects
+from nasaq.api.docs import install_docs
+from nasaq.api.errors import install_error_handlers
+from nasaq.api.frontend import install_frontend
+from nasaq.settings import Settings, get_settings
+from nasaq.storage.database import create_db_engine, session_factory
+from nasaq.storage.migrate import upgrade_to_head
+
+
+def create_app(settings: Settings | None = None) -> FastAPI:
+    settings = settings or get_settings()
+
+    @asynccontextmanager
+    async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+        # The schema is brought up to date before the first request, on every start.
+        upgrade_to_head(settings)
+        engine = create_db_engine(settings)
+        app.state.engine = engine
+        app.state.sessions = session_factory(engine)
+        try:
+            yield
+        finally:
+            engine.dispose()
+
+    app = FastAPI(
+        title="Nasaq",
+        version=__version__,
+        summary="Web IDE and S7-300/400 CPU simulator",
+        openapi_url="/api/openapi.json",
+        docs_url=None,
+        redoc_url=None,
+        lifespan=lifespan,
+    )
+    app.state.settings = settings
+    app.add_middleware(GZipMiddleware, minimum_size=1024)
+    install_error_handlers(app)
+
+    api = APIRouter(prefix="/api")
+    api.include_router(health.router)
+    api.include_router(projects.router)
+    app.include_router(api)
+    install_docs(app)
+    install_frontend(app, settings.frontend_dist)  # last: its catch-all route must come after
+    return app

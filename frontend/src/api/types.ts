@@ -1,0 +1,79 @@
+/**
+ * Shapes of the Nasaq HTTP API, as the front end sees them.
+ *
+ * Kept in one file and held to the backend's OpenAPI document (`openapi.json` beside this file,
+ * regenerated with `.venv/bin/nasaq openapi > frontend/src/api/openapi.json`): the tests fail when
+ * the two disagree on the fields of a shape.
+ */
+
+/** `GET /api/health` */
+export interface Health {
+  status: 'ok';
+  version: string;
+  database: 'ok';
+}
+
+/** A PLC project stored on the server (`GET /api/projects`, `POST /api/projects`). */
+export interface Project {
+  id: number;
+  name: string;
+  description: string;
+  /** ISO 8601 timestamp */
+  created_at: string;
+  /** ISO 8601 timestamp */
+  updated_at: string;
+}
+
+/** Body of `POST /api/projects`. */
+export interface ProjectCreate {
+  name: string;
+  description: string;
+}
+
+/** A path into the request that caused an error, e.g. `["body", "name"]`. */
+export type ErrorLocation = Array<string | number>;
+
+/** What every failed API call answers: `{"error": ApiProblem}`. */
+export interface ApiProblem {
+  /** Stable catalogue code, e.g. `API409` or `API105`. */
+  code: string;
+  message: string;
+  /** Message key the UI translates (`problems.<key>` in the catalogues). */
+  key: string;
+  params?: Record<string, unknown>;
+  location?: ErrorLocation | null;
+  severity?: Severity;
+  span?: Span | null;
+}
+
+export interface ApiErrorBody {
+  error: ApiProblem;
+}
+
+export type Severity = 'error' | 'warning' | 'info';
+
+/**
+ * Where a problem sits (backend `nasaq.diagnostics.Span`): a 1-based source position and, for
+ * LAD/FBD/Graph, a network. Every part is optional; a project-wide problem has no span at all.
+ */
+export interface Span {
+  file?: string | null;
+  line?: number | null;
+  column?: number | null;
+  end_line?: number | null;
+  end_column?: number | null;
+  network?: number | null;
+}
+
+/** A compiler or simulator finding (backend `nasaq.diagnostics.Diagnostic`). */
+export interface Diagnostic {
+  /** Stable catalogue code, e.g. `STL101`. */
+  code: string;
+  severity: Severity;
+  /** Message key the UI translates (`problems.<key>` in the catalogues). */
+  key: string;
+  /** The message in English, parameters filled in; shown when the UI has no translation. */
+  message: string;
+  params: Record<string, unknown>;
+  span: Span | null;
+}

@@ -1,0 +1,50 @@
+import { useTranslation } from 'react-i18next';
+import { CloseIcon, DocumentIcon } from '../ui/icons';
+import { useEditorTabs, type EditorTab } from './EditorTabsContext';
+
+export function useTabTitle(): (tab: EditorTab) => string {
+  const { t } = useTranslation();
+  return (tab) => t(`editor.tabs.${tab.kind}`);
+}
+
+/** The row of open editors; each has its own close button. */
+export function EditorTabStrip() {
+  const { t } = useTranslation();
+  const { tabs, activeId, activate, close } = useEditorTabs();
+  const titleOf = useTabTitle();
+
+  return (
+    <div className="editor-tabs">
+      <ul className="editor-tabs__list" aria-label={t('editor.openEditors')}>
+        {tabs.map((tab) => {
+          const active = tab.id === activeId;
+          const title = titleOf(tab);
+          return (
+            <li key={tab.id} className={active ? 'editor-tab editor-tab--active' : 'editor-tab'}>
+              <button
+                type="button"
+                className="editor-tab__button"
+                aria-current={active ? 'true' : undefined}
+                data-testid={`editor-tab-${tab.id}`}
+                onClick={() => activate(tab.id)}
+              >
+                <DocumentIcon className="editor-tab__icon" />
+                <bdi>{title}</bdi>
+              </button>
+              <button
+                type="button"
+                className="editor-tab__close"
+                aria-label={t('editor.closeTab', { title })}
+                title={t('editor.closeTab', { title })}
+                data-testid={`editor-tab-close-${tab.id}`}
+                onClick={() => close(tab.id)}
+              >
+                <CloseIcon size={12} />
+              </button>
+            </li>
+          );
+        })}
+      </ul>
+    </div>
+  );
+}

@@ -1,0 +1,75 @@
+import { useTranslation } from 'react-i18next';
+import type { Diagnostic, Severity, Span } from '../api/types';
+import { CheckIcon, ErrorIcon, InfoIcon, WarningIcon } from '../ui/icons';
+import { diagnosticsStore, useDiagnostics, type DiagnosticsStore } from './diagnosticsStore';
+
+const SEVERITY_ICON = { error: ErrorIcon, warning: WarningIcon, info: InfoIcon } as const;
+const SEVERITY_ORDER: Record<Severity, number> = { error: 0, warning: 1, info: 2 };
+
+function sorted(diagnostics: readonly Diagnostic[]): Diagnostic[] {
+  return [...diagnostics].sort(
+    (a, b) =>
+      SEVERITY_ORDER[a.severity] - SEVERITY_ORDER[b.severity] ||
+      (a.span?.file ?? '').localeCompare(b.span?.file ?? '') ||
+      (a.span?.network ?? 0) - (b.span?.network ?? 0) ||
+      (a.span?.line ?? 0) - (b.span?.line ?? 0) ||
+      (a.span?.column ?? 0) - (b.span?.column ?? 0),
+  );
+}
+
+/** `OB1.awl:3:7`, `FB1.lad:NW 2`, or '' for a problem without a place. */
+export function spanText(span: Span | null): string {
+  if (!span) return '';
+  const parts = [span.file ?? ''];
+  if (span.network != null) parts.push(`NW ${span.network}`);
+  if (span.line != null) parts.push(String(span.line));
+  if (span.line != null && span.column != null) parts.push(String(span.column));
+  return parts.filter((part) => part !== '').join(':');
+}
+
+function DiagnosticRow({ diagnostic }: { diagnostic: Diagnostic }) {
+  const { t, i18n } = useTranslation();
+  const Icon = SEVERITY_ICON[diagnostic.severity];
+  const translated = `problems.${diagnostic.key}`;
+  const message = i18n.exists(translated) ? t(translated, { ...diagnostic.params }) : diagnostic.message;
+  const where = spanText(diagnostic.span);
+  return (
+    <li className={`diagnostic diagnostic--${diagnostic.severity}`} data-testid="diagnostic">
+      <Icon className="diagnostic__icon" />
+      <span className="visually-hidden">{t(`diagnostics.severity.${diagnostic.severity}`)}</span>
+      <code className="diagnostic__code">{diagnostic.code}</code>
+      <span className="diagnostic__message">{message}</span>
+      {where && (
+        <code className="diagnostic__location" dir="ltr">
+          {where}
+        </code>
+      )}
+    </li>
+  );
+}
+
+/** The Diagnostics panel: every reported problem, errors first; "No problems" when there are none. */
+export function DiagnosticsList({ store = diagnosticsStore }: { store?: DiagnosticsStore }) {
+  const { t } = useTranslation();
+  const diagnostics = useDiagnostics(store);
+
+  return (
+    <div className="diagnostics" data-testid="diagnostics">
+      {diagnostics.length === 0 ? (
+        <p className="panel-empty">
+          <CheckIcon className="panel-empty__icon panel-empty__icon--ok" />
+          {t('diagnostics.none')}
+        </p>
+      ) : (
+        <ul className="diagnostics__list" aria-label={t('diagnostics.listLabel', { count: diagnostics.length })}>
+          {sorted(diagnostics).map((diagnostic, index) => (
+            <DiagnosticRow
+              key={`${diagnostic.code}-${spanText(diagnostic.span)}-${index}`}
+              diagnostic={diagnostic}
+            />
+          ))}
+        </ul>
+      )}
+    </div>
+  );
+}

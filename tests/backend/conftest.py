@@ -1,0 +1,38 @@
+"""Shared fixtures: every test gets its own data folder, database and (fake) built front end."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from fastapi.testclient import TestClient
+
+from nasaq.api.app import create_app
+from nasaq.settings import Settings
+
+
+@pytest.fixture
+def dist(tmp_path: Path) -> Path:
+    """A minimal built front end, shaped like Vite's output."""
+    root = tmp_path / "dist"
+    (root / "assets").mkdir(parents=True)
+    (root / "index.html").write_text(
+        '<!doctype html><html><head><script type="module" src="/assets/app-1a2b.js"></script>'
+        '</head><body><div id="root"></div></body></html>',
+        encoding="utf-8",
+    )
+    (root / "assets" / "app-1a2b.js").write_text("console.log('nasaq');\n" * 200, encoding="utf-8")
+    (root / "favicon.svg").write_text("<svg xmlns='http://www.w3.org/2000/svg'/>", encoding="utf-8")
+    return root
+
+
+@pytest.fixture
+def settings(tmp_path: Path, dist: Path) -> Settings:
+    return Settings(data_dir=tmp_path / "data", frontend_dist=dist)
+
+
+@pytest.fixture
+def client(settings: Settings) -> Iterator[TestClient]:
+    with TestClient(create_app(settings)) as test_client:
+        yield test_client

@@ -1,0 +1,56 @@
+/**
+ * A classroom may have no internet: the built front end and the API docs must load everything
+ * from the Nasaq server itself.
+ */
+import fs from 'node:fs';
+import path from 'node:path';
+import { test, expect } from './fixtures';
+
+const dist = path.resolve(__dirname, '../../frontend/dist');
+
+/** Strings that look like URLs but are never fetched: XML namespaces and error-text links. */
+const NEVER_FETCHED = [
+  /^http:\/\/www\.w3\.org\/(2000\/svg|1999\/xlink|1999\/xhtml|1998\/Math\/MathML|XML\/1998\/namespace|2000\/xmlns\/?)$/,
+  /^https:\/\/react\.dev\/errors\/$/, // React's production error text
+  /^https:\/\/react\.i18next\.com\/latest\/usetranslation-hook$/, // a react-i18next warning text
+];
+
+function filesUnder(folder: string): string[] {
+  return fs.readdirSync(folder, { withFileTypes: true }).flatMap((entry) => {
+    const full = path.join(folder, entry.name);
+    return entry.isDirectory() ? filesUnder(full) : [full];
+  });
+}
+
+test('the built front end names no outside URL it could load', () => {
+  const textFiles = filesUnder(dist).filter((f) => /\.(html|js|css|svg|json|webmanifest)$/.test(f));
+  expect(textFiles.length).toBeGreaterThan(2);
+  const found = new Set<string>();
+  for (const file of textFiles) {
+    const text = fs.readFileSync(file, 'utf8');
+    for (const match of text.matchAll(/https?:\/\/[^\s"'`)<>\\]+/g)) {
+      if (!NEVER_FETCHED.some((allowed) => allowed.test(match[0]))) {
+        found.add(`${path.relative(dist, file)}: ${match[0]}`);
+      }
+    }
+    // Protocol-relative loads (//host/...) in markup or styles would go outside too.
+    for (const match of text.matchAll(/(?:src|href)=["']\/\/[^"']+|url\(\s*["']?\/\/[^)]+/g)) {
+      found.add(`${path.relative(dist, file)}: ${match[0]}`);
+    }
+  }
+  expect([...found]).toEqual([]);
+});
+
+test('the fonts are bundled files of the build', () => {
+  const fonts = filesUnder(path.join(dist, 'assets')).filter((f) => f.endsWith('.woff2'));
+  const names = fonts.map((f) => path.basename(f));
+  expect(names.some((n) => n.startsWith('vazirmatn-arabic'))).toBe(true);
+  expect(names.some((n) => n.startsWith('noto-sans-vietnamese'))).toBe(true);
+});
+
+test('the API docs page renders from local files only', async ({ page, watch }) => {
+  await page.goto('/api/docs');
+  await expect(page.getByText('/api/projects', { exact: true }).first()).toBeVisible();
+  expect(watch.foreignRequests).toEqual([]);
+  expect(watch.consoleErrors).toEqual([]);
+});
