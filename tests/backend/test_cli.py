@@ -28,27 +28,25 @@ def _env(tmp_path: Path) -> dict[str, str]:
     return {**os.environ, "NASAQ_DATA_DIR": str(tmp_path / "data")}
 
 
-def test_migrate_creates_the_database(tmp_path: Path) -> None:
+def _nasaq(tmp_path: Path, *args: str) -> str:
+    """Runs the installed command as a user would and returns what it printed."""
     result = subprocess.run(
-        [sys.executable, "-m", "nasaq", "migrate"],
+        [sys.executable, "-m", "nasaq", *args],
         env=_env(tmp_path),
         capture_output=True,
         text=True,
         check=True,
     )
-    assert "up to date" in result.stdout
+    return result.stdout
+
+
+def test_migrate_creates_the_database(tmp_path: Path) -> None:
+    assert "up to date" in _nasaq(tmp_path, "migrate")
     assert (tmp_path / "data" / "nasaq.db").is_file()
 
 
 def test_openapi_prints_the_schema(tmp_path: Path) -> None:
-    result = subprocess.run(
-        [sys.executable, "-m", "nasaq", "openapi"],
-        env=_env(tmp_path),
-        capture_output=True,
-        text=True,
-        check=True,
-    )
-    assert "/api/projects" in json.loads(result.stdout)["paths"]
+    assert "/api/projects" in json.loads(_nasaq(tmp_path, "openapi"))["paths"]
 
 
 def _free_port() -> int:

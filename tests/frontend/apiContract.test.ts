@@ -3,7 +3,10 @@
  * exactly the keys of its TypeScript interface (the compiler checks that), and the test checks them
  * against the schema's properties, so a field added or renamed on either side fails here.
  */
+import fs from 'node:fs';
+import path from 'node:path';
 import { describe, expect, it } from 'vitest';
+import { CLIENT_ERROR_CODES, asApiError } from '../../frontend/src/api/client';
 import openapi from '../../frontend/src/api/openapi.json';
 import type { ApiProblem, Diagnostic, Health, Project, ProjectCreate, Span } from '../../frontend/src/api/types';
 
@@ -48,5 +51,18 @@ describe('API types match the OpenAPI document', () => {
     const severity = schemas.Severity as unknown as { enum: string[] };
     const ours: Record<Diagnostic['severity'], true> = { error: true, warning: true, info: true };
     expect(keys(ours)).toEqual([...severity.enum].sort());
+  });
+});
+
+describe('client-side problem codes', () => {
+  it('are rows of the one diagnostics catalogue, with the keys the client uses', () => {
+    const csv = fs.readFileSync(path.resolve(__dirname, '../../backend/nasaq/diagnostics/catalogue.csv'), 'utf8');
+    const keyOf = new Map(csv.trim().split('\n').slice(1).map((row) => {
+      const [code, , key] = row.split(',');
+      return [code!, key!] as const;
+    }));
+    expect(keyOf.get(CLIENT_ERROR_CODES.unreachable)).toBe('server_unreachable');
+    expect(keyOf.get(CLIENT_ERROR_CODES.badResponse)).toBe('unexpected_response');
+    expect(keyOf.get(asApiError(new Error('x')).code)).toBe(asApiError(new Error('x')).key);
   });
 });

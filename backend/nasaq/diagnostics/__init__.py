@@ -1,4 +1,5 @@
-"""The one catalogue of problem codes: ``API1xx`` now; ``STL1xx``, ``SCL2xx``, ``SIM5xx`` later.
+"""The one catalogue of problem codes: ``API1xx`` (HTTP API), ``NET0xx`` (raised by the browser
+client when no API answer arrives); ``STL1xx``, ``SCL2xx``, ``SIM5xx`` later.
 
 Every problem Nasaq reports carries a stable code, a message key and parameters, so the UI can show
 it in any of its languages and lessons can key hints to it. The English templates live in
