@@ -56,7 +56,7 @@ describe('API types match the OpenAPI document', () => {
 
 describe('client-side problem codes', () => {
   it('are rows of the one diagnostics catalogue, with the keys the client uses', () => {
-    const csv = fs.readFileSync(path.resolve(__dirname, '../../backend/nasaq/diagnostics/catalogue.csv'), 'utf8');
+    const csv = fs.readFileSync(path.resolve(__dirname, '../../backend/nasaq/diagnostics/client.csv'), 'utf8');
     const keyOf = new Map(csv.trim().split('\n').slice(1).map((row) => {
       const [code, , key] = row.split(',');
       return [code!, key!] as const;

@@ -3,7 +3,7 @@ client when no API answer arrives); ``STL1xx``, ``SCL2xx``, ``SIM5xx`` later.
 
 Every problem Nasaq reports carries a stable code, a message key and parameters, so the UI can show
 it in any of its languages and lessons can key hints to it. The English templates live in
-``catalogue.csv``; the front end's catalogues translate the keys.
+``*.csv`` files beside this package; the front end's catalogues translate the keys.
 """
 
 from nasaq.diagnostics.catalogue import CatalogueEntry, entry, render

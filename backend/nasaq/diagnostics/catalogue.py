@@ -1,4 +1,9 @@
-"""Loads ``catalogue.csv`` once and renders its messages."""
+"""Loads the catalogue once and renders its messages.
+
+The catalogue is every ``*.csv`` beside this module (``api.csv``, ``stl.csv``, ``sim.csv`` ...), one
+file per family of codes, all with the columns ``code,severity,key,message``. A code or key that
+appears twice anywhere is an error.
+"""
 
 from __future__ import annotations
 
@@ -21,13 +26,18 @@ class CatalogueEntry:
 
 @cache
 def _entries() -> dict[str, CatalogueEntry]:
-    text = resources.files(__package__).joinpath("catalogue.csv").read_text(encoding="utf-8")
     entries: dict[str, CatalogueEntry] = {}
-    for row in csv.DictReader(text.splitlines()):
-        code = row["code"]
-        if code in entries:
-            raise ValueError(f"diagnostic code {code} appears twice in catalogue.csv")
-        entries[code] = CatalogueEntry(code, Severity(row["severity"]), row["key"], row["message"])
+    keys: set[str] = set()
+    folder = resources.files(__package__)
+    for source in sorted(folder.iterdir(), key=lambda item: item.name):
+        if not source.name.endswith(".csv"):
+            continue
+        for row in csv.DictReader(source.read_text(encoding="utf-8").splitlines()):
+            code, key = row["code"], row["key"]
+            if code in entries or key in keys:
+                raise ValueError(f"{source.name}: code {code} or key {key} is already catalogued")
+            entries[code] = CatalogueEntry(code, Severity(row["severity"]), key, row["message"])
+            keys.add(key)
     return entries
 
 
