@@ -155,9 +155,14 @@ class StatusCondition(StrEnum):
 
 @dataclass(frozen=True, slots=True)
 class Register:
-    """``L STW`` / ``T STW``, ``L DBNO``, ``L DBLG``, ``L DINO``, ``L DILG``, ``LAR1 AR2``."""
+    """``L STW`` / ``T STW``, ``L DBNO``, ``L DBLG``, ``L DINO``, ``L DILG``, ``LAR1 AR2``.
 
-    name: str  # "STW", "DBNO", "DBLG", "DINO", "DILG", "AR1", "AR2"
+    The test pseudo-ops (``--test-ops``) add ``ACCU1``..``ACCU4`` (``__ACCU n``) and one status
+    bit each ``STW.FC STW.RLO STW.STA STW.OR STW.OS STW.OV STW.CC0 STW.CC1 STW.BR`` (``__STW bit``);
+    ``__AR n`` is ``AR1``/``AR2`` and ``__DBR 1``/``__DBR 2`` is ``DBNO``/``DINO``.
+    """
+
+    name: str
 
 
 @dataclass(frozen=True, slots=True)

@@ -23,6 +23,7 @@ class Instruction:
     op: str  # international mnemonic, canonical spelling: "A", "AN(", "=", "L", "JC", "+I", "==I"
     operand: Operand | None = None
     origin: Origin | None = None
+    operand2: Operand | None = None  # second operand of the test pseudo-ops: __ASSERT== M 0.0, 1
     label: str | None = None  # label defined on this instruction ("M001:")
     call: CallInfo | None = None  # for CALL only
 
