@@ -11,11 +11,13 @@ DIST := frontend/dist/index.html
 FRONTEND_SOURCES := $(shell find frontend/src frontend/public -type f 2>/dev/null) \
 	frontend/index.html frontend/package.json frontend/tsconfig.json frontend/vite.config.ts
 
-.PHONY: help install run test chromium lock clean
+.PHONY: help install run test bench conformance chromium lock clean
 
 help:
 	@echo "make run    install what is missing, then serve the IDE at http://127.0.0.1:8000"
 	@echo "make test   install what is missing (incl. Chromium), then run every test suite"
+	@echo "make bench        STL instructions per second of the CPU simulator"
+	@echo "make conformance  awlsim's self-checking STL programs (downloads awlsim from PyPI)"
 	@echo "make install | make lock (re-pin Python dependencies) | make clean"
 
 install: $(PY_STAMP) $(NODE_STAMP) $(DIST)
@@ -41,6 +43,12 @@ run: install
 
 test: install chromium
 	$(BIN)/python tests/run_suites.py
+
+bench: install
+	$(BIN)/python -m nasaq.cpu.bench
+
+conformance: install
+	$(BIN)/python tests/conformance/awlsim_suite.py
 
 # The browser tests drive Debian's Chromium; Playwright's own browser download is not used.
 chromium:

@@ -1,7 +1,5 @@
-"""The ``nasaq`` command: ``serve`` the IDE, ``migrate`` the database, print the ``openapi`` schema.
-
-Later capabilities add their subcommands here (``run``, ``test``, ``compile``).
-"""
+"""The ``nasaq`` command: ``serve`` the IDE, ``run`` STL sources headless, ``test`` scenarios,
+``migrate`` the database, print the ``openapi`` schema."""
 
 from __future__ import annotations
 
@@ -42,6 +40,36 @@ def _openapi(settings: Settings, _args: argparse.Namespace) -> int:
     return 0
 
 
+def _run(_settings: Settings, args: argparse.Namespace) -> int:
+    from nasaq.headless.addresses import AddressError
+    from nasaq.headless.run import main as run_main
+    from nasaq.headless.run import options_from_args
+
+    try:
+        options = options_from_args(
+            args.sources,
+            args.cycles,
+            args.cycle_ms,
+            args.set,
+            args.at,
+            args.mnemonics,
+            args.test_ops,
+            args.profile,
+            args.time,
+            args.restart,
+        )
+    except AddressError as exc:
+        print(f"nasaq run: {exc}", file=sys.stderr)
+        return 2
+    return run_main(options)
+
+
+def _test(_settings: Settings, args: argparse.Namespace) -> int:
+    from nasaq.scenarios.report import main as test_main
+
+    return test_main(args.scenarios, sys.stdout)
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="nasaq", description=__doc__)
     parser.add_argument("--version", action="version", version=f"nasaq {__version__}")
@@ -51,6 +79,45 @@ def build_parser() -> argparse.ArgumentParser:
     serve.add_argument("--host", help="interface to listen on (default: NASAQ_HOST or 127.0.0.1)")
     serve.add_argument("--port", type=int, help="port (default: NASAQ_PORT or 8000)")
     serve.set_defaults(handler=_serve)
+
+    run = commands.add_parser(
+        "run", help="run STL sources for N scans and print the final CPU state as JSON"
+    )
+    run.add_argument("sources", nargs="+", metavar="SOURCE", help=".awl sources, symbol tables")
+    run.add_argument("--cycles", type=int, default=1, help="scans of OB1 to run (after OB100)")
+    run.add_argument("--cycle-ms", type=float, default=10.0, help="virtual time per scan")
+    run.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="ADDR=VALUE",
+        help="hold an input from before scan 1; M, Q, DB are written once after OB100",
+    )
+    run.add_argument(
+        "--at", action="append", default=[], metavar="K:ADDR=VALUE", help="change before scan K"
+    )
+    run.add_argument("--mnemonics", choices=["auto", "en", "de"], default="auto")
+    run.add_argument(
+        "--test-ops", action="store_true", help="accept the __ASSERT== ... self-check operations"
+    )
+    run.add_argument("--profile", choices=["S7-300", "S7-400"], default="S7-300")
+    run.add_argument(
+        "--time",
+        choices=["virtual", "real", "fast"],
+        default="virtual",
+        help="virtual: exact cycle steps (default); real: paced to the wall clock; fast: no pacing",
+    )
+    run.add_argument(
+        "--restart",
+        choices=["warm", "cold"],
+        default="warm",
+        help="startup: warm restart (OB100, the default) or cold restart (OB102)",
+    )
+    run.set_defaults(handler=_run)
+
+    test = commands.add_parser("test", help="run scenario files (PLC unit tests)")
+    test.add_argument("scenarios", nargs="+", metavar="SCENARIO", help="YAML files or folders")
+    test.set_defaults(handler=_test)
 
     migrate = commands.add_parser("migrate", help="create or upgrade the database schema")
     migrate.set_defaults(handler=_migrate)

@@ -49,3 +49,18 @@ def test_every_code_is_translated_in_the_front_end(language: str) -> None:
         ours = {name for _, name, _, _ in string.Formatter().parse(found.template) if name}
         theirs = set(re.findall(r"\{\{\s*(\w+)\s*\}\}", problems[found.key]))
         assert theirs <= ours, f"{language}: problems.{found.key} uses unknown {theirs - ours}"
+
+
+def test_every_code_the_code_raises_is_catalogued() -> None:
+    """A code written in the sources but missing from the catalogue would crash at run time."""
+    catalogued = {found.code for found in all_entries()}
+    package = Path(__file__).resolve().parents[2] / "backend" / "nasaq"
+    used: dict[str, str] = {}
+    for source in package.rglob("*.py"):
+        for code in re.findall(
+            r"[\"'((](?:API|NET|STL|SCL|SIM)\d{3}[\"')]", source.read_text("utf-8")
+        ):
+            used.setdefault(code[1:-1], source.name)
+    missing = {code: where for code, where in used.items() if code not in catalogued}
+    assert used
+    assert missing == {}

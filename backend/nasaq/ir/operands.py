@@ -92,13 +92,21 @@ class ConstType(StrEnum):
     POINTER = "POINTER"  # P#...: a 32-bit area pointer (area-crossing when it names an area)
     BYTES = "BYTES"  # B#(1, 2) / B#(1, 2, 3, 4)
     COUNTER = "COUNTER"  # C#123 (BCD)
+    # DT#1990-1-1-0:0:0.0: the 8 BCD bytes of a DATE_AND_TIME as one 64-bit ``pattern`` (first
+    # byte highest). Never loaded into ACCU1: only an actual parameter (FC/FB IN) or a DB value.
+    DATE_AND_TIME = "DATE_AND_TIME"
+    # 'more than 4 characters' (or any character constant passed to a STRING parameter): the
+    # characters as one big-endian ``pattern`` of ``value`` bytes. Only a STRING actual parameter.
+    STRING = "STRING"
 
 
 @dataclass(frozen=True, slots=True)
 class Constant:
     """``pattern`` is the unsigned 32-bit value ``L`` loads into ACCU1 (INT constants sign-extended,
     REAL as IEEE 754 bits, S5TIME/C# in BCD, P# as an area pointer). ``value`` keeps the value as
-    written (int or float) for display, checks and ``+ n`` / ``INC n`` style operands."""
+    written (int or float) for display, checks and ``+ n`` / ``INC n`` style operands.
+    DATE_AND_TIME and STRING constants are the exceptions: no accumulator values but actual
+    parameters, their ``pattern`` as long as they are (see ``ConstType``)."""
 
     type: ConstType
     pattern: int

@@ -1,0 +1,207 @@
+"""``nasaq run``: download sources into a fresh CPU, run N scans, print the final state as JSON.
+
+The JSON object is a fixed contract that outside checks rely on: ``cycles``, ``time_ms``, ``mode``,
+``stop_reason``, ``I``/``Q``/``M`` (nonzero bytes by decimal offset), ``DB`` (by DB number, then
+offset), ``T`` (running or set timers), ``C`` (nonzero counters), ``ACCU1``, ``ACCU2`` and ``STW``.
+Exit status: 0 when the scans ran (or the program stopped the CPU with SFC 46), 1 when the CPU went
+to STOP on an error, 2 when the sources do not compile.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+import traceback
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, TextIO
+
+from nasaq.cpu import Cpu, Profile
+from nasaq.cpu.errors import sentence_part
+from nasaq.cpu.pacing import Pacer, TimeMode
+from nasaq.diagnostics import render
+from nasaq.headless.addresses import (
+    AddressError,
+    address_text,
+    encode_value,
+    parse_address,
+    parse_number,
+)
+from nasaq.headless.sources import SourceError, compile_files, diagnostic_line
+from nasaq.ir import Area, Direct, Program
+
+TIMERS = 256
+COUNTERS = 256
+
+
+@dataclass(frozen=True, slots=True)
+class Assignment:
+    """``ADDR=VALUE`` from ``--set``, or ``K:ADDR=VALUE`` from ``--at`` (scan K, 1-based)."""
+
+    address: Direct
+    pattern: int
+    scan: int = 0
+
+
+@dataclass(slots=True)
+class RunOptions:
+    sources: list[Path]
+    cycles: int = 1
+    cycle_ms: float = 10.0
+    sets: list[Assignment] = field(default_factory=list)
+    at: list[Assignment] = field(default_factory=list)
+    mnemonics: str = "auto"
+    test_ops: bool = False
+    profile: Profile = Profile.S7_300
+    time_mode: TimeMode = TimeMode.VIRTUAL
+    cold_restart: bool = False  # start with a cold restart (OB102) instead of a warm one (OB100)
+
+
+def parse_assignment(text: str, with_scan: bool = False) -> Assignment:
+    """Reads ``I0.0=1`` (or ``3:I0.0=1`` with ``with_scan``); raises AddressError."""
+    scan = 0
+    if with_scan:
+        head, sep, text = text.partition(":")
+        if not sep or not head.strip().isdigit() or int(head) < 1:
+            raise AddressError(f"--at needs K:ADDR=VALUE with K a scan number from 1, not {head!r}")
+        scan = int(head)
+    target, sep, value = text.partition("=")
+    if not sep:
+        raise AddressError(f"{text!r}: write ADDR=VALUE, e.g. I0.0=1 or MW10=16#FF")
+    address = parse_address(target)
+    if not isinstance(address, Direct):
+        raise AddressError(f"{target.strip()}: timers and counters cannot be set")
+    return Assignment(address, encode_value(address, parse_number(value)), scan)
+
+
+def _apply(cpu: Cpu, assignment: Assignment) -> None:
+    if assignment.address.area is Area.I:
+        cpu.set_input(assignment.address, assignment.pattern)
+    else:
+        cpu.write(assignment.address, assignment.pattern)
+
+
+def _bytes_map(data: bytes | None) -> dict[str, int]:
+    return {str(offset): value for offset, value in enumerate(data or b"") if value}
+
+
+def snapshot(cpu: Cpu, cycles: int) -> dict[str, Any]:
+    """The final state in the fixed JSON shape."""
+    timers: dict[str, dict[str, int]] = {}
+    for number in range(TIMERS):
+        q, remaining, running = cpu.timer(number)
+        if running or q:
+            timers[str(number)] = {"q": int(q), "remaining_ms": int(remaining)}
+    counters: dict[str, dict[str, int]] = {}
+    for number in range(COUNTERS):
+        q, value = cpu.counter(number)
+        if value or q:
+            counters[str(number)] = {"q": int(q), "value": int(value)}
+    dbs = {str(n): _bytes_map(cpu.db_bytes(n)) for n in sorted(cpu.db_numbers())}
+    return {
+        "cycles": cycles,
+        "time_ms": cpu.time_ms,
+        "mode": cpu.mode,
+        "stop_reason": cpu.stop_reason,
+        "I": _bytes_map(cpu.area_bytes(Area.I)),
+        "Q": _bytes_map(cpu.area_bytes(Area.Q)),
+        "M": _bytes_map(cpu.area_bytes(Area.M)),
+        "DB": {n: values for n, values in dbs.items() if values},
+        "T": timers,
+        "C": counters,
+        "ACCU1": cpu.accu1 & 0xFFFFFFFF,
+        "ACCU2": cpu.accu2 & 0xFFFFFFFF,
+        "STW": cpu.stw,
+    }
+
+
+def execute(options: RunOptions, out: TextIO, err: TextIO) -> int:
+    """Runs the whole command; returns the exit status."""
+    try:
+        result = compile_files(options.sources, options.mnemonics, options.test_ops)
+    except SourceError as exc:
+        print(f"nasaq run: {exc}", file=err)
+        return 2
+    for diagnostic in result.diagnostics:
+        print(diagnostic_line(diagnostic), file=err)
+    if not result.ok:
+        return 2
+    try:
+        return _simulate(options, result.program, out, err)
+    except Exception as exc:  # a simulator bug: STOP SIM500 in the usual shape, never a traceback
+        traceback.print_exception(exc, file=err)
+        message = sentence_part(render("SIM500").message)
+        state: dict[str, Any] = {"cycles": 0, "time_ms": 0, "mode": "STOP"}
+        state["stop_reason"] = f"{message} (SIM500)"
+        state |= {key: {} for key in ("I", "Q", "M", "DB", "T", "C")}
+        state |= {"ACCU1": 0, "ACCU2": 0, "STW": 0}
+        json.dump(state, out, indent=None, separators=(",", ":"))
+        out.write("\n")
+        return 1
+
+
+def _simulate(options: RunOptions, program: Program, out: TextIO, err: TextIO) -> int:
+    cpu = Cpu(
+        program,
+        profile=options.profile,
+        cycle_ms=options.cycle_ms,
+        test_ops=options.test_ops,
+    )
+    for assignment in (*options.sets, *options.at):
+        try:
+            cpu.read(assignment.address)
+        except (KeyError, IndexError, ValueError) as exc:
+            reason = exc.args[0] if isinstance(exc, KeyError) and exc.args else "out of range"
+            print(f"nasaq run: {address_text(assignment.address)}: {reason}", file=err)
+            return 2
+    for assignment in options.sets:
+        if assignment.address.area is Area.I:
+            _apply(cpu, assignment)
+    cpu.start(cold=options.cold_restart)
+    for assignment in options.sets:
+        if assignment.address.area is not Area.I:
+            _apply(cpu, assignment)
+
+    def before_scan(scan: int) -> None:
+        for assignment in options.at:
+            if assignment.scan == scan:
+                _apply(cpu, assignment)
+
+    ran = Pacer(options.time_mode).run(cpu, options.cycles, before_scan)
+    json.dump(snapshot(cpu, ran), out, indent=None, separators=(",", ":"))
+    out.write("\n")
+    if cpu.mode == "STOP" and not cpu.stopped_by_program:
+        return 1
+    return 0
+
+
+def main(options: RunOptions) -> int:
+    return execute(options, sys.stdout, sys.stderr)
+
+
+def options_from_args(
+    sources: Sequence[str],
+    cycles: int,
+    cycle_ms: float,
+    sets: Sequence[str],
+    at: Sequence[str],
+    mnemonics: str,
+    test_ops: bool,
+    profile: str,
+    time_mode: str = "virtual",
+    restart: str = "warm",
+) -> RunOptions:
+    """Builds options from command-line strings; raises AddressError for a bad --set/--at."""
+    return RunOptions(
+        sources=[Path(source) for source in sources],
+        cycles=cycles,
+        cycle_ms=cycle_ms,
+        sets=[parse_assignment(text) for text in sets],
+        at=[parse_assignment(text, with_scan=True) for text in at],
+        mnemonics=mnemonics,
+        test_ops=test_ops,
+        profile=Profile(profile),
+        time_mode=TimeMode(time_mode),
+        cold_restart=restart == "cold",
+    )

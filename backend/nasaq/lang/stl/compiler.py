@@ -1,0 +1,328 @@
+"""``compile_sources``: STL sources and symbol tables → one ``ir.Program`` and diagnostics.
+
+Phases: read symbol tables → parse every STL file → detect each file's mnemonics → register
+blocks (one index over all files, so a CALL may name a block of another file) → declare
+interfaces and types → lower code blocks, data blocks and UDTs → resolve jumps. Blocks with
+errors are still in the program, and ``ok`` tells whether anything was an error.
+"""
+
+from __future__ import annotations
+
+import gc
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+from nasaq.diagnostics import Diagnostic, Severity
+from nasaq.ir import Block, BlockKind, Program, Variable
+from nasaq.lang.layout import variables
+from nasaq.lang.stl import ast
+from nasaq.lang.stl.addresses import AddressError, parse_address
+from nasaq.lang.stl.bind import BlockInfo, ProgramIndex
+from nasaq.lang.stl.calls import AutoInstance
+from nasaq.lang.stl.dbdata import DataBuilder
+from nasaq.lang.stl.diag import problem, sort_key
+from nasaq.lang.stl.lower import CodeLowerer, LoweredCode, apply_code
+from nasaq.lang.stl.mnemonics import detect
+from nasaq.lang.stl.parse import ParseResult, parse_source
+from nasaq.lang.stl.resolve import Scope
+from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES, SymbolTable, read_symbol_table
+from nasaq.lang.types import BlockType, StructType, type_text
+
+STL_SUFFIXES = (".awl", ".stl")
+# A whole-project export of a large plant is a few MB; anything bigger is not an STL source anyone
+# wrote, and the parser (about 7 µs per token) would make the user wait for nothing.
+MAX_SOURCE_CHARS = 4 * 1024 * 1024
+
+
+@dataclass(frozen=True, slots=True)
+class SourceFile:
+    """One input file; ``text`` may be bytes (decoded as UTF-8, else Windows-1252)."""
+
+    name: str
+    text: str | bytes
+
+
+@dataclass(slots=True)
+class CompileResult:
+    program: Program
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    @property
+    def ok(self) -> bool:
+        return not any(item.severity is Severity.ERROR for item in self.diagnostics)
+
+
+@dataclass(slots=True)
+class _File:
+    name: str
+    parsed: ParseResult
+    lines: list[str]
+    language: str = "en"
+
+
+def decode(text: str | bytes) -> str:
+    if isinstance(text, str):
+        return text
+    try:
+        return text.decode("utf-8")
+    except UnicodeDecodeError:
+        return text.decode("cp1252", errors="replace")
+
+
+def _suffix(name: str) -> str:
+    dot = name.rfind(".")
+    return name[dot:].lower() if dot >= 0 else ""
+
+
+def _code_items(file: _File) -> Iterable[ast.CodeItem]:
+    yield from file.parsed.source.loose_code
+    for block in file.parsed.source.blocks:
+        yield from block.code
+
+
+def _language(file: _File, forced: str) -> str:
+    if forced in ("de", "en"):
+        return forced
+    mnemonics: list[str] = []
+    areas: list[str | None] = []
+    for item in _code_items(file):
+        if not isinstance(item, ast.InstrNode) or item.param_line:
+            continue
+        mnemonics.append(item.mnemonic.upper())
+        for operand in item.operands:
+            if isinstance(operand, ast.AddressNode):
+                try:
+                    areas.append(parse_address(operand.text).language)
+                except AddressError:
+                    continue
+    return detect(mnemonics, areas)
+
+
+def _attach_comments(decls: list[ast.VarDeclNode], comments: dict[int, str]) -> None:
+    for decl in decls:
+        decl.comment = comments.get(decl.loc.line, "")
+        if isinstance(decl.type, ast.StructTypeNode):
+            _attach_comments(decl.type.members, comments)
+
+
+class _Compiler:
+    def __init__(self, mnemonics: str, test_ops: bool) -> None:
+        self.mnemonics = mnemonics
+        self.test_ops = test_ops
+        self.diagnostics: list[Diagnostic] = []
+        self.symbols = SymbolTable()
+        self.files: list[_File] = []
+        self.index = ProgramIndex(self.symbols, test_ops)
+        self.program = Program()
+        self.auto: dict[int, AutoInstance] = {}
+        self.lowered: dict[tuple[BlockKind, int], LoweredCode] = {}
+
+    def read(self, sources: list[SourceFile]) -> None:
+        for source in sources:
+            suffix = _suffix(source.name)
+            if suffix in SYMBOL_TABLE_SUFFIXES:
+                text = decode(source.text)
+                self.diagnostics += read_symbol_table(source.name, text, self.symbols)
+        for source in sources:
+            suffix = _suffix(source.name)
+            if suffix in SYMBOL_TABLE_SUFFIXES:
+                continue
+            if suffix not in STL_SUFFIXES:
+                self.diagnostics.append(
+                    problem("STL110", source.name, ast.Loc(1, 1, 1, 1), file=source.name)
+                )
+                continue
+            text = decode(source.text)
+            if len(text) > MAX_SOURCE_CHARS:
+                size = {"size_kb": len(text) // 1024, "limit_kb": MAX_SOURCE_CHARS // 1024}
+                where = ast.Loc(1, 1, 1, 1)
+                self.diagnostics.append(
+                    problem("STL111", source.name, where, file=source.name, **size)
+                )
+                continue
+            parsed = parse_source(source.name, text)
+            self.diagnostics += parsed.diagnostics
+            empty = not parsed.source.blocks and not any(
+                isinstance(item, ast.InstrNode) for item in parsed.source.loose_code
+            )
+            if empty and not parsed.diagnostics:
+                where = ast.Loc(1, 1, 1, 1)
+                self.diagnostics.append(problem("STL112", source.name, where, file=source.name))
+            file = _File(source.name, parsed, text.split("\n"))
+            file.language = _language(file, self.mnemonics)
+            self.files.append(file)
+        self.program.symbols = {
+            symbol.name: symbol.address for symbol in self.symbols.symbols.values()
+        }
+
+    def register(self) -> list[tuple[BlockInfo, _File]]:
+        registered: list[tuple[BlockInfo, _File]] = []
+        for file in self.files:
+            nodes = list(file.parsed.source.blocks)
+            loose = file.parsed.source.loose_code
+            if any(isinstance(item, ast.InstrNode) for item in loose):
+                first = loose[0]
+                where = first.loc
+                nodes.append(
+                    ast.BlockNode("ORGANIZATION_BLOCK", "OB 1", False, where, where, code=loose)
+                )
+            for node in nodes:
+                for item in node.head:
+                    if isinstance(item, ast.VarSectionNode):
+                        _attach_comments(item.decls, file.parsed.comments)
+                if isinstance(node.db_body, ast.StructTypeNode):
+                    _attach_comments(node.db_body.members, file.parsed.comments)
+                info = self.index.register(node, file.name, file.language)
+                if info is not None:
+                    registered.append((info, file))
+        for info, _ in registered:
+            self.index.declare(info)
+        return registered
+
+    def build(self, registered: list[tuple[BlockInfo, _File]]) -> None:
+        for info, file in registered:
+            block = self.header(info)
+            if info.kind in (BlockKind.OB, BlockKind.FB, BlockKind.FC):
+                self.code_block(info, file, block)
+            elif info.kind is BlockKind.DB:
+                self.data_block(info, block)
+            else:
+                slots, _size = self.index.slots_of_type(info.db_type or StructType(()), info)
+                block.interface = variables(slots)
+            self.program.add(block)
+        for auto in self.auto.values():
+            self.auto_instance(auto)
+        self.resolve_jumps()
+
+    def header(self, info: BlockInfo) -> Block:
+        block = Block(info.kind, info.number, name=info.name, file=info.file)
+        for item in info.node.head:
+            if isinstance(item, ast.TitleNode):
+                block.title = item.text
+            elif isinstance(item, ast.HeaderPropNode):
+                block.attributes[item.key] = item.value
+            elif isinstance(item, ast.AttributesNode):
+                block.attributes.update(item.values)
+            elif isinstance(item, ast.FlagNode):
+                if item.name == "KNOW_HOW_PROTECT":
+                    block.know_how_protect = True
+                else:
+                    block.attributes[item.name] = "true"
+        return block
+
+    def code_block(self, info: BlockInfo, file: _File, block: Block) -> None:
+        interface: list[Variable] = []
+        if info.kind is BlockKind.FB:
+            interface += variables(self.index.instance_layout(info))
+        elif info.kind is BlockKind.FC:
+            for param in info.params:
+                size = self.index.layout.size_bits(param.type)
+                interface.append(
+                    Variable(param.name, type_text(param.type), param.section, 0, size)
+                )
+            if info.return_type is not None:
+                block.return_type = type_text(info.return_type)
+        interface += variables(self.index.temp_layout(info))
+        block.interface = interface
+        block.temp_bytes = info.temp_bits // 8
+        scope = Scope(self.index, info, info.language, self.test_ops)
+        lowered = CodeLowerer(scope, file.lines, self.auto).lower(info.node.code)
+        apply_code(block, lowered)
+        self.lowered[(info.kind, info.number)] = lowered
+        self.diagnostics += scope.diagnostics
+
+    def data_block(self, info: BlockInfo, block: Block) -> None:
+        data_type = info.db_type
+        if data_type is None:
+            if info.node.db_values:
+                self.diagnostics.append(
+                    problem("STL216", info.file, info.node.loc, name=info.label, member="...")
+                )
+            return
+        if isinstance(data_type, BlockType) and data_type.kind in ("FB", "SFB"):
+            block.instance_of = data_type.number
+            block.attributes["instance_of"] = f"{data_type.kind} {data_type.number}"
+            known = (BlockKind(data_type.kind), data_type.number) in self.index.blocks
+            if not known and data_type.kind == "FB":
+                self.diagnostics.append(
+                    problem("STL213", info.file, info.node.loc, block=f"FB {data_type.number}")
+                )
+            if data_type.kind == "SFB" and self.index._expand(data_type) is None:
+                return  # a system FB whose interface Nasaq does not know: the CPU lays it out
+        slots, size = self.index.slots_of_type(data_type, info)
+        block.interface = variables(slots)
+        builder = DataBuilder(self.index.layout, size, info.file)
+        builder.defaults(slots)
+        assigns = [item for item in info.node.db_values if isinstance(item, ast.DbAssignNode)]
+        builder.actual_values(slots, assigns)
+        block.data = bytes(builder.data)
+        self.diagnostics += builder.diagnostics
+
+    def auto_instance(self, auto: AutoInstance) -> None:
+        block = Block(BlockKind.DB, auto.db, file=auto.file, instance_of=auto.fb.number)
+        block.attributes["instance_of"] = f"{auto.fb.kind} {auto.fb.number}"
+        expansion = self.index._expand(auto.fb)
+        if isinstance(expansion, list):
+            slots, size = self.index.layout.instance(expansion)
+            block.interface = variables(slots)
+            builder = DataBuilder(self.index.layout, size, auto.file)
+            builder.defaults(slots)
+            block.data = bytes(builder.data)
+            self.diagnostics += builder.diagnostics
+        self.program.add(block)
+
+    def resolve_jumps(self) -> None:
+        owners: dict[str, str] = {}
+        for (kind, number), lowered in self.lowered.items():
+            for label in lowered.labels:
+                owners.setdefault(label, f"{kind.value} {number}")
+        for (kind, number), lowered in self.lowered.items():
+            info = self.index.blocks[(kind, number)]
+            for jump in lowered.jumps:
+                if jump.label in lowered.labels:
+                    continue
+                if jump.label in owners:
+                    self.diagnostics.append(
+                        problem(
+                            "STL219",
+                            info.file,
+                            jump.loc,
+                            label=jump.label,
+                            other=owners[jump.label],
+                        )
+                    )
+                else:
+                    self.diagnostics.append(
+                        problem("STL207", info.file, jump.loc, label=jump.label, block=info.label)
+                    )
+
+
+def compile_sources(
+    sources: Iterable[SourceFile], mnemonics: str = "auto", test_ops: bool = False
+) -> CompileResult:
+    """Compiles STL sources (``.awl``/``.stl``) with their symbol tables (``.sdf``, ``.asc``,
+    ``.seq``, ``.csv``) into one program. ``mnemonics`` is ``"auto"`` (per file), ``"en"`` or
+    ``"de"``; ``test_ops`` accepts awlsim's ``__ASSERT``-style self-check instructions and the
+    few awlsim extensions listed in ``nasaq.lang.stl``."""
+    gc_was_enabled = gc.isenabled()
+    # A compilation makes millions of small objects and frees few until it ends: the cyclic
+    # collector would scan them again and again (a quarter of the time of a large source) to
+    # find nothing. The syntax trees are freed (by reference counting) before it runs again.
+    gc.disable()
+    try:
+        return _compile(list(sources), mnemonics, test_ops)
+    finally:
+        if gc_was_enabled:
+            gc.enable()
+
+
+def _compile(sources: list[SourceFile], mnemonics: str, test_ops: bool) -> CompileResult:
+    compiler = _Compiler(mnemonics, test_ops)
+    compiler.read(sources)
+    compiler.diagnostics += compiler.index.diagnostics
+    compiler.index.diagnostics = []
+    registered = compiler.register()
+    compiler.build(registered)
+    compiler.diagnostics += compiler.index.diagnostics
+    diagnostics = sorted(compiler.diagnostics, key=sort_key)
+    return CompileResult(compiler.program, diagnostics)

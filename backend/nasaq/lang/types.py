@@ -1,0 +1,140 @@
+"""S7-300/400 data types as the compilers see them (STL now, SCL later).
+
+Elementary types have fixed sizes; STRING[n], ARRAY (any number of dimensions), STRUCT, UDTs
+and FB/SFB instances (multi-instances) are built from them. UDT and FB types are referred to
+by number (``BlockType``) and expanded through the program, so a UDT used in many places is
+declared once, as in STEP 7.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from nasaq.ir import Width
+
+ELEMENTARY_BITS = {
+    "BOOL": 1,
+    "BYTE": 8,
+    "CHAR": 8,
+    "WORD": 16,
+    "INT": 16,
+    "S5TIME": 16,
+    "DATE": 16,
+    "DWORD": 32,
+    "DINT": 32,
+    "REAL": 32,
+    "TIME": 32,
+    "TIME_OF_DAY": 32,
+    "DATE_AND_TIME": 64,
+    "POINTER": 48,
+    "ANY": 80,
+    "TIMER": 16,
+    "COUNTER": 16,
+    "BLOCK_FB": 16,
+    "BLOCK_FC": 16,
+    "BLOCK_DB": 16,
+    "BLOCK_SDB": 16,
+}
+ALIASES = {"TOD": "TIME_OF_DAY", "DT": "DATE_AND_TIME"}
+# Types whose value fits an accumulator: what L/T/A/= may address directly.
+LOADABLE = frozenset(name for name, bits in ELEMENTARY_BITS.items() if bits <= 32) - {
+    "TIMER",
+    "COUNTER",
+    "BLOCK_FB",
+    "BLOCK_FC",
+    "BLOCK_DB",
+    "BLOCK_SDB",
+}
+# Parameter types an FB stores as a pointer when passed IN_OUT (and an FC always by reference).
+REFERENCE_TYPES = ("STRING", "ARRAY", "STRUCT", "UDT", "DATE_AND_TIME")
+
+
+@dataclass(frozen=True, slots=True)
+class Elementary:
+    name: str
+
+    @property
+    def bits(self) -> int:
+        return ELEMENTARY_BITS[self.name]
+
+
+@dataclass(frozen=True, slots=True)
+class StringType:
+    length: int = 254
+
+
+@dataclass(frozen=True, slots=True)
+class ArrayType:
+    dims: tuple[tuple[int, int], ...]
+    element: DataType
+
+    @property
+    def count(self) -> int:
+        total = 1
+        for low, high in self.dims:
+            total *= high - low + 1
+        return total
+
+
+@dataclass(frozen=True, slots=True)
+class Field:
+    """A declared variable or struct member; ``initial`` keeps the declared initial value."""
+
+    name: str
+    type: DataType
+    initial: object = None
+    comment: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class StructType:
+    fields: tuple[Field, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class BlockType:
+    """A UDT (``UDT 5``) or an FB/SFB instance (``FB 2`` as a multi-instance)."""
+
+    kind: str  # "UDT", "FB" or "SFB"
+    number: int
+
+
+DataType = Elementary | StringType | ArrayType | StructType | BlockType
+
+
+def elementary(name: str) -> Elementary | StringType | None:
+    upper = ALIASES.get(name.upper(), name.upper())
+    if upper == "STRING":
+        return StringType()
+    return Elementary(upper) if upper in ELEMENTARY_BITS else None
+
+
+_WIDTHS = {name: Width(ELEMENTARY_BITS[name]) for name in LOADABLE}
+
+
+def width_of(data_type: DataType) -> Width | None:
+    """The access width of a type that fits an accumulator, else None."""
+    return _WIDTHS.get(data_type.name) if isinstance(data_type, Elementary) else None
+
+
+def type_text(data_type: DataType) -> str:
+    """The declaration as STEP 7 writes it: ``INT``, ``STRING[10]``, ``ARRAY[1..4] OF INT``."""
+    if isinstance(data_type, Elementary):
+        return data_type.name
+    if isinstance(data_type, StringType):
+        return f"STRING[{data_type.length}]"
+    if isinstance(data_type, ArrayType):
+        dims = ", ".join(f"{low}..{high}" for low, high in data_type.dims)
+        return f"ARRAY[{dims}] OF {type_text(data_type.element)}"
+    if isinstance(data_type, StructType):
+        return "STRUCT"
+    return f"{data_type.kind} {data_type.number}"
+
+
+def is_reference(data_type: DataType) -> bool:
+    """Types passed by reference (a pointer) when they are FB IN_OUT or FC parameters."""
+    if isinstance(data_type, Elementary):
+        return data_type.name == "DATE_AND_TIME"
+    return isinstance(data_type, StringType | ArrayType | StructType) or (
+        isinstance(data_type, BlockType) and data_type.kind == "UDT"
+    )

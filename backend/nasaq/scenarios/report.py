@@ -1,0 +1,44 @@
+"""``nasaq test``: runs scenario files (or every ``*.yaml`` below given folders) and reports."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from pathlib import Path
+from typing import TextIO
+
+from nasaq.scenarios.runner import ScenarioResult, run_scenario
+
+
+def scenario_files(targets: Iterable[Path]) -> list[Path]:
+    files: list[Path] = []
+    for target in targets:
+        if target.is_dir():
+            files.extend(sorted(target.rglob("*.yaml")))
+        else:
+            files.append(target)
+    return files
+
+
+def report(results: Sequence[ScenarioResult], out: TextIO) -> None:
+    for result in results:
+        if result.error is not None:
+            print(f"{result.path}: ERROR: {result.error}", file=out)
+            for line in result.diagnostics:
+                print(f"  {line}", file=out)
+        for failure in result.failures:
+            print(f"{result.path}: {result.name}: {failure.describe()}", file=out)
+    passed = sum(result.passed for result in results)
+    print(f"{passed} passed, {len(results) - passed} failed", file=out)
+
+
+def main(targets: Sequence[str], out: TextIO) -> int:
+    """Exit status: 0 all passed, 1 some failed, 2 a scenario or its sources were invalid."""
+    files = scenario_files(Path(target) for target in targets)
+    if not files:
+        print("nasaq test: no scenario files found", file=out)
+        return 2
+    results = [run_scenario(path) for path in files]
+    report(results, out)
+    if any(result.error is not None for result in results):
+        return 2
+    return 0 if all(result.passed for result in results) else 1
