@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from nasaq.diagnostics import Severity, entry
 from nasaq.ir import (
     Block,
     Constant,
@@ -338,7 +339,8 @@ class CodeLowerer:
             if code == "STL204" or code == "STL203" or code == "STL214":
                 params = {**params, "mnemonic": node.mnemonic} if "mnemonic" in params else params
             self.scope.report(code, node.operands[0].loc, **params)
-            return None
+            if entry(code).severity is not Severity.WARNING:
+                return None  # a warning (e.g. STL237) keeps the operand as written
         return _plain(resolved.operand)
 
 
