@@ -41,6 +41,8 @@ from nasaq.ir import (
     TimerRef,
     Variable,
 )
+from nasaq.ir.types import ACCU_TYPES, NUMBER_TYPES, TYPE_ALIASES
+from nasaq.ir.types import ELEMENTARY_BITS as ELEMENTARY_BITS_ALL
 
 if TYPE_CHECKING:
     from nasaq.cpu.codegen.compiler import Compiled
@@ -50,22 +52,10 @@ if TYPE_CHECKING:
 
 Ref = tuple[Any, int, int]  # (bytearray | None, byte or number, bit)
 
-ELEMENTARY_BITS: dict[str, int] = {
-    "BOOL": 1,
-    "BYTE": 8,
-    "CHAR": 8,
-    "WORD": 16,
-    "INT": 16,
-    "S5TIME": 16,
-    "DATE": 16,
-    "DWORD": 32,
-    "DINT": 32,
-    "REAL": 32,
-    "TIME": 32,
-    "TIME_OF_DAY": 32,
-    "TOD": 32,
+# Elementary parameters that fit an accumulator, under every name a declaration may use.
+ELEMENTARY_BITS: dict[str, int] = {name: ELEMENTARY_BITS_ALL[name] for name in ACCU_TYPES} | {
+    alias: ELEMENTARY_BITS_ALL[name] for alias, name in TYPE_ALIASES.items() if name in ACCU_TYPES
 }
-NUMBER_TYPES = frozenset({"TIMER", "COUNTER", "BLOCK_DB", "BLOCK_FC", "BLOCK_FB", "BLOCK_SDB"})
 PARAM_SECTIONS = ("IN", "OUT", "IN_OUT", "RETURN")
 _GLOBAL_AREAS = frozenset({Area.I, Area.Q, Area.M, Area.PI, Area.PQ})
 

@@ -11,40 +11,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from nasaq.ir import Width
+from nasaq.ir.types import ACCU_TYPES, ELEMENTARY_BITS, TYPE_ALIASES
 
-ELEMENTARY_BITS = {
-    "BOOL": 1,
-    "BYTE": 8,
-    "CHAR": 8,
-    "WORD": 16,
-    "INT": 16,
-    "S5TIME": 16,
-    "DATE": 16,
-    "DWORD": 32,
-    "DINT": 32,
-    "REAL": 32,
-    "TIME": 32,
-    "TIME_OF_DAY": 32,
-    "DATE_AND_TIME": 64,
-    "POINTER": 48,
-    "ANY": 80,
-    "TIMER": 16,
-    "COUNTER": 16,
-    "BLOCK_FB": 16,
-    "BLOCK_FC": 16,
-    "BLOCK_DB": 16,
-    "BLOCK_SDB": 16,
-}
-ALIASES = {"TOD": "TIME_OF_DAY", "DT": "DATE_AND_TIME"}
-# Types whose value fits an accumulator: what L/T/A/= may address directly.
-LOADABLE = frozenset(name for name, bits in ELEMENTARY_BITS.items() if bits <= 32) - {
-    "TIMER",
-    "COUNTER",
-    "BLOCK_FB",
-    "BLOCK_FC",
-    "BLOCK_DB",
-    "BLOCK_SDB",
-}
+# The sizes live with the IR, where the CPU reads them too.
+ALIASES = TYPE_ALIASES
+LOADABLE = ACCU_TYPES
 # Parameter types an FB stores as a pointer when passed IN_OUT (and an FC always by reference).
 REFERENCE_TYPES = ("STRING", "ARRAY", "STRUCT", "UDT", "DATE_AND_TIME")
 

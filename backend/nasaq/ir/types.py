@@ -1,0 +1,34 @@
+"""Sizes of the S7 elementary types: one table for the compilers (layout, checks) and the CPU
+(parameter passing). Interface variables carry their type as text (``ir.Variable.type``)."""
+
+from __future__ import annotations
+
+ELEMENTARY_BITS: dict[str, int] = {
+    "BOOL": 1,
+    "BYTE": 8,
+    "CHAR": 8,
+    "WORD": 16,
+    "INT": 16,
+    "S5TIME": 16,
+    "DATE": 16,
+    "DWORD": 32,
+    "DINT": 32,
+    "REAL": 32,
+    "TIME": 32,
+    "TIME_OF_DAY": 32,
+    "DATE_AND_TIME": 64,
+    "POINTER": 48,
+    "ANY": 80,
+    "TIMER": 16,
+    "COUNTER": 16,
+    "BLOCK_FB": 16,
+    "BLOCK_FC": 16,
+    "BLOCK_DB": 16,
+    "BLOCK_SDB": 16,
+}
+TYPE_ALIASES = {"TOD": "TIME_OF_DAY", "DT": "DATE_AND_TIME"}
+NUMBER_TYPES = frozenset({"TIMER", "COUNTER", "BLOCK_FB", "BLOCK_FC", "BLOCK_DB", "BLOCK_SDB"})
+# Types whose value fits an accumulator: what L/T/A/= may address directly.
+ACCU_TYPES = frozenset(
+    name for name, bits in ELEMENTARY_BITS.items() if bits <= 32 and name not in NUMBER_TYPES
+)
