@@ -102,9 +102,10 @@ class ConstType(StrEnum):
 
 @dataclass(frozen=True, slots=True)
 class Constant:
-    """``pattern`` is the unsigned 32-bit value ``L`` loads into ACCU1 (INT constants sign-extended,
-    REAL as IEEE 754 bits, S5TIME/C# in BCD, P# as an area pointer). ``value`` keeps the value as
-    written (int or float) for display, checks and ``+ n`` / ``INC n`` style operands.
+    """``pattern`` is the unsigned 32-bit value ``L`` loads into ACCU1 (INT constants are 16-bit
+    immediates with ACCU1-H = 0, REAL as IEEE 754 bits, S5TIME/C# in BCD, P# an area pointer).
+    ``value`` keeps the value as written (int or float) for display, checks and ``+ n`` /
+    ``INC n`` style operands.
     DATE_AND_TIME and STRING constants are the exceptions: no accumulator values but actual
     parameters, their ``pattern`` as long as they are (see ``ConstType``)."""
 

@@ -2,7 +2,8 @@
 (``DT#`` excepted: 64 bits that only a parameter or a DB value holds).
 
 Rules (STEP 7 / S7-300/400, cross-checked with awlsim's behaviour):
-- decimal: INT, -32768..32767, sign-extended to 32 bits (larger values need ``L#``);
+- decimal: INT, -32768..32767, as a 16-bit immediate: ACCU1-H becomes 0, so ``L -1`` then
+  ``T MD 0`` stores 16#0000FFFF, the classic reason to write ``L#-1`` (larger values need ``L#``);
 - ``L#``: DINT; ``B#16#`` ``W#16#`` ``DW#16#`` (also base 2 and 8) and bare ``16#``/``2#``/``8#``
   (WORD up to 16#FFFF, DWORD above); ``_`` separators are allowed in digits;
 - ``B#(a, b)`` / ``B#(a, b, c, d)``: the bytes packed big-endian (first byte highest);
@@ -110,7 +111,7 @@ def decimal_int(text: str) -> Constant:
     value = int(text)
     if not -32768 <= value <= 32767:
         raise _range(text, "INT", hint="; write L#" + text.lstrip("+") + " for a DINT")
-    return Constant(ConstType.INT, value & MASK32, value, text)
+    return Constant(ConstType.INT, value & 0xFFFF, value, text)  # a 16-bit immediate
 
 
 def real(text: str) -> Constant:

@@ -10,8 +10,9 @@ from nasaq.lang.stl.constants import ConstantError, date_and_time_bytes, parse_l
 
 CASES = [
     ("NUMBER", "5", ConstType.INT, 0x00000005),
-    ("NUMBER", "-1", ConstType.INT, 0xFFFFFFFF),
-    ("NUMBER", "-32768", ConstType.INT, 0xFFFF8000),
+    # A 16-bit INT constant fills ACCU1-L only: L -1 / T MD 0 gives 16#0000FFFF (use L#-1).
+    ("NUMBER", "-1", ConstType.INT, 0x0000FFFF),
+    ("NUMBER", "-32768", ConstType.INT, 0x00008000),
     ("TYPED", "L#-5", ConstType.DINT, 0xFFFFFFFB),
     ("TYPED", "L#100000", ConstType.DINT, 100000),
     ("TYPED", "B#16#FF", ConstType.BYTE, 0xFF),
