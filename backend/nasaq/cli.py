@@ -57,6 +57,7 @@ def _run(_settings: Settings, args: argparse.Namespace) -> int:
             args.profile,
             args.time,
             args.restart,
+            args.clock_memory,
         )
     except AddressError as exc:
         print(f"nasaq run: {exc}", file=sys.stderr)
@@ -112,6 +113,11 @@ def build_parser() -> argparse.ArgumentParser:
         choices=["warm", "cold"],
         default="warm",
         help="startup: warm restart (OB100, the default) or cold restart (OB102)",
+    )
+    run.add_argument(
+        "--clock-memory",
+        metavar="MB",
+        help="marker byte used as clock memory (e.g. 100 or MB100): bit 0 = 0.1 s ... bit 7 = 2 s",
     )
     run.set_defaults(handler=_run)
 

@@ -101,16 +101,23 @@ def symbol_tables(program: Path) -> list[str]:
 
 
 def cpu_options(program: Path) -> list[str]:
-    """The CPU a same-named awlsim project asks for: ``nr_accus="4"`` is an S7-400. awlsim starts
-    such a CPU with a cold restart when OB 102 is loaded (a real S7-400 does so when its startup
-    parameter says cold restart), so that is passed on too."""
+    """The CPU a same-named awlsim project asks for: its clock memory byte (``--clock-memory``),
+    and ``nr_accus="4"`` is an S7-400. awlsim starts such a CPU with a cold restart when OB 102
+    is loaded (a real S7-400 does so when its startup parameter says cold restart), so that is
+    passed on too."""
     project = program.with_suffix(".awlpro")
     if not project.is_file():
         return []
-    found = re.search(r'nr_accus\s*=\s*"?(\d+)', project.read_text(errors="replace"))
+    config = project.read_text(errors="replace")
+    options: list[str] = []
+    # The clock memory byte of the CPU configuration (-1: none), as in STEP 7's CPU properties.
+    clock = re.search(r'clock_memory_byte\s*=\s*"?(-?\d+)', config)
+    if clock is not None and int(clock[1]) >= 0:
+        options += ["--clock-memory", clock[1]]
+    found = re.search(r'nr_accus\s*=\s*"?(\d+)', config)
     if found is None or found[1] != "4":
-        return []
-    options = ["--profile", "S7-400"]
+        return options
+    options += ["--profile", "S7-400"]
     text = program.read_text(encoding="latin-1")
     if re.search(r"^\s*ORGANIZATION_BLOCK\s+OB\s*102\b", text, re.IGNORECASE | re.MULTILINE):
         options += ["--restart", "cold"]

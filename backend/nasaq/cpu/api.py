@@ -26,11 +26,22 @@ class Cpu:
         cycle_ms: float = 10,
         watchdog_ms: int = 150,
         test_ops: bool = False,
+        clock_memory_byte: int | None = None,
     ) -> None:
+        """``clock_memory_byte``: the marker byte the CPU uses as clock memory (the CPU
+        properties' "clock memory" in STEP 7), or None for none; raises ValueError if the
+        profile has no such marker byte."""
         if test_ops:  # a self-checking test program may ask for 4 accumulators (__FEATURE 0, 4)
             profile = feature_profile(program, profile)
+        if clock_memory_byte is not None and not 0 <= clock_memory_byte < profile.marker_bytes:
+            raise ValueError(
+                f"clock memory MB {clock_memory_byte}: the {profile.value} has MB 0 to "
+                f"MB {profile.marker_bytes - 1}"
+            )
         self.profile = profile
-        self._engine = Engine(program, profile, cycle_ms, watchdog_ms, test_ops)
+        self._engine = Engine(
+            program, profile, cycle_ms, watchdog_ms, test_ops, clock_memory_byte=clock_memory_byte
+        )
 
     # -- operation -----------------------------------------------------------------------------
     def start(self, cold: bool = False) -> None:

@@ -136,12 +136,17 @@ class Calls:
         profile: Profile,
         compiled: Callable[[BlockKind, int], Compiled | None],
         handle: Callable[[CpuError, Compiled, int], int],
+        test_ops: bool = False,
+        clock_reset: Callable[[], None] | None = None,
     ) -> None:
         self.m = machine
         self.memory = memory
         self.profile = profile
         self.compiled = compiled
         self.handle = handle
+        self.test_ops = test_ops  # awlsim's own SFCs (negative numbers) exist only then
+        self.clock_reset = clock_reset  # restarts the clock memory (awlsim's SFC -4)
+        self.tick_offset = 0  # added to the virtual clock for TIME_TCK (moved by SFC -4)
         self._db_ids: dict[int, int] | None = None
 
     # -- entry from generated code --------------------------------------------------------------
@@ -727,6 +732,46 @@ class Calls:
                     buf, byte, bit = self.locate(
                         arg.value, frame, vframe, params, site.caller_slots
                     )
-                    self._store(buf, byte, 32, self.m.now & 0x7FFFFFFF, bit)
+                    ticks = (self.m.now + self.tick_offset) & 0x7FFFFFFF
+                    self._store(buf, byte, 32, ticks, bit)
+            return
+        if number < 0 and self.test_ops:
+            self._awlsim_sfc(site, number, frame, vframe, params)
             return
         raise CpuError("SIM506", block=f"SFC {number}")
+
+    def _awlsim_sfc(
+        self, site: CallSite, number: int, frame: bytearray, vframe: bytearray, params: list[Ref]
+    ) -> None:
+        """awlsim's own system functions, which its self-checking programs call (test_ops only):
+        SFC -3 ``__SHUTDOWN`` (SHUTDOWN_TYPE 1 ends the simulator, 2 stops the CPU: both are a
+        stop requested by the program here) and SFC -4 ``__CLKRST`` (the system time restarts
+        100 ms before TIME_TCK wraps round at 2**31 ms, and the clock memory restarts at 0).
+        awlsim's SFC -2 ``__REBOOT`` is not emulated (SIM506)."""
+        if number == -3:
+            kind = self._int_input(site, "SHUTDOWN_TYPE", frame, vframe, params)
+            if kind in (1, 2):
+                raise CpuStopError("SIM502")
+            raise CpuError("SIM526", name="SHUTDOWN_TYPE", block="SFC -3", actual=str(kind))
+        if number == -4:
+            self.tick_offset = 0x7FFFFFFF - 100 - self.m.now
+            if self.clock_reset is not None:
+                self.clock_reset()
+            self.m.br = 1
+            return
+        raise CpuError("SIM506", block=f"SFC {number}")
+
+    def _int_input(
+        self, site: CallSite, name: str, frame: bytearray, vframe: bytearray, params: list[Ref]
+    ) -> int:
+        """The INT actual of input ``name`` of a system function call (0 when it is missing)."""
+        for arg in site.args:
+            if arg.name.upper() != name:
+                continue
+            if isinstance(arg.value, Constant):
+                raw = arg.value.pattern & 0xFFFF
+            else:
+                buf, byte, bit = self.locate(arg.value, frame, vframe, params, site.caller_slots)
+                raw = self._load(buf, byte, 16, bit)
+            return raw - 0x10000 if raw & 0x8000 else raw
+        return 0

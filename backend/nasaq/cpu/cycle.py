@@ -4,8 +4,10 @@ Warm restart clears the non-retentive state and runs OB100; cold restart clears 
 the data blocks their downloaded values back and runs OB102. Each scan copies the peripheral
 inputs into the PII (forced inputs win), runs OB35 when its 100 ms of virtual time are due,
 runs OB1, copies the PIQ to the peripheral outputs (forced outputs win) and advances the
-virtual clock by the cycle time. Runtime errors are entered in the diagnostic buffer and call
-OB121/OB122 if loaded, otherwise the CPU goes to STOP with the location. Without OB1 the CPU
+virtual clock by the cycle time. The clock memory byte (if one is configured) follows the
+virtual clock from the restart on; it is written at the restart and at the start of every scan.
+Runtime errors are entered in the diagnostic buffer and call OB121/OB122 if loaded, otherwise the
+CPU goes to STOP with the location. Without OB1 the CPU
 still goes to RUN and its cycles run no program, as a real S7-300/400 does. Nothing a user program
 does lets a Python exception out of ``start()`` or ``scan()``: an internal error is STOP SIM500.
 """
@@ -42,6 +44,9 @@ log = logging.getLogger(__name__)
 OB35_INTERVAL_MS = 100
 RETENTIVE_MARKER_BYTES = 16  # STEP 7 default: MB 0..15 keep their value over a warm restart
 RETENTIVE_COUNTERS = 8  # C 0..7
+CLOCK_STEP_MS = 50
+# Half periods of the clock memory bits in 50 ms steps: bit 0 = 0.1 s (10 Hz) ... bit 7 = 2 s.
+CLOCK_HALF_PERIODS = (1, 2, 4, 5, 8, 10, 16, 20)
 
 _START_INFO = {  # OB number: (event class, priority)
     1: (0x11, 1),
@@ -71,6 +76,7 @@ class Engine:
         cycle_ms: float,
         watchdog_ms: int,
         test_ops: bool,
+        clock_memory_byte: int | None = None,
     ) -> None:
         self.program = program
         self.profile = profile
@@ -82,7 +88,17 @@ class Engine:
         self.m = Machine()
         self.timers = Timers(profile.timers, self.m)
         self.counters = Counters(profile.counters)
-        self.calls = Calls(self.m, self.memory, profile, self._compiled, self.handle)
+        self.clock_memory_byte = clock_memory_byte
+        self.clock_origin = 0  # virtual time at which the clock memory bits were last all 0
+        self.calls = Calls(
+            self.m,
+            self.memory,
+            profile,
+            self._compiled,
+            self.handle,
+            test_ops=test_ops,
+            clock_reset=self.restart_clock_memory,
+        )
         self.loader = Loader(
             program,
             profile,
@@ -139,6 +155,7 @@ class Engine:
         self.next_ob35 = self.m.now + OB35_INTERVAL_MS
         self.first_scan = True
         self.cold_start = cold
+        self.restart_clock_memory()
         if self.loader.get(BlockKind.OB, 1) is None:
             self._diagnose(CpuError("SIM524"))  # information only: the cycles run no program
         self.m.lim = self.m.n + self._budget()
@@ -158,6 +175,8 @@ class Engine:
         mem.I[:count] = mem.PI[:count]
         for (byte, bit), value in self.forced_inputs.items():
             _put_bit(mem.I, byte, bit, value)
+        if self.clock_memory_byte is not None:
+            mem.M[self.clock_memory_byte] = clock_memory_value(m.now - self.clock_origin)
         m.lim = m.n + self._budget()
         while self.mode == "RUN" and m.now >= self.next_ob35:
             self.next_ob35 += OB35_INTERVAL_MS
@@ -175,6 +194,12 @@ class Engine:
         whole = int(self._clock_fraction)
         self._clock_fraction -= whole
         m.now += whole
+
+    def restart_clock_memory(self) -> None:
+        """The clock memory bits start from 0 now (at a restart; awlsim's SFC -4)."""
+        self.clock_origin = self.m.now
+        if self.clock_memory_byte is not None:
+            self.memory.M[self.clock_memory_byte] = 0
 
     def _budget(self) -> int:
         return self.watchdog_ms * 1_000_000 // self.profile.ns_per_instruction
@@ -284,6 +309,16 @@ class Engine:
         text = f"{sentence_part(error.message)} ({error.code})"
         self.stop_reason = f"{place}: {text}" if place else text
         self.memory.PQ[:] = bytes(len(self.memory.PQ))  # outputs are disabled in STOP
+
+
+def clock_memory_value(elapsed_ms: int) -> int:
+    """The clock memory byte ``elapsed_ms`` after its bits were all 0: bit k is a square wave
+    (half the period 1, half 0) with the period of ``CLOCK_HALF_PERIODS[k]`` × 100 ms."""
+    steps = max(0, elapsed_ms) // CLOCK_STEP_MS
+    value = 0
+    for bit, half in enumerate(CLOCK_HALF_PERIODS):
+        value |= ((steps // half) & 1) << bit
+    return value
 
 
 def _put_bit(buf: bytearray, byte: int, bit: int, value: int) -> None:

@@ -56,6 +56,7 @@ class RunOptions:
     profile: Profile = Profile.S7_300
     time_mode: TimeMode = TimeMode.VIRTUAL
     cold_restart: bool = False  # start with a cold restart (OB102) instead of a warm one (OB100)
+    clock_memory: int | None = None  # the clock memory byte (MB n), None for none
 
 
 def parse_assignment(text: str, with_scan: bool = False) -> Assignment:
@@ -142,12 +143,17 @@ def execute(options: RunOptions, out: TextIO, err: TextIO) -> int:
 
 
 def _simulate(options: RunOptions, program: Program, out: TextIO, err: TextIO) -> int:
-    cpu = Cpu(
-        program,
-        profile=options.profile,
-        cycle_ms=options.cycle_ms,
-        test_ops=options.test_ops,
-    )
+    try:
+        cpu = Cpu(
+            program,
+            profile=options.profile,
+            cycle_ms=options.cycle_ms,
+            test_ops=options.test_ops,
+            clock_memory_byte=options.clock_memory,
+        )
+    except ValueError as exc:  # a clock memory byte the CPU does not have
+        print(f"nasaq run: {exc}", file=err)
+        return 2
     for assignment in (*options.sets, *options.at):
         try:
             cpu.read(assignment.address)
@@ -191,6 +197,7 @@ def options_from_args(
     profile: str,
     time_mode: str = "virtual",
     restart: str = "warm",
+    clock_memory: str | None = None,
 ) -> RunOptions:
     """Builds options from command-line strings; raises AddressError for a bad --set/--at."""
     return RunOptions(
@@ -204,4 +211,17 @@ def options_from_args(
         profile=Profile(profile),
         time_mode=TimeMode(time_mode),
         cold_restart=restart == "cold",
+        clock_memory=None if clock_memory is None else parse_marker_byte(clock_memory),
     )
+
+
+def parse_marker_byte(text: str) -> int:
+    """``100`` or ``MB100`` / ``MB 100`` (the clock memory byte); raises AddressError."""
+    digits = text.strip()
+    if digits[:2].upper() == "MB":
+        digits = digits[2:].strip()
+    if not digits.isdigit():
+        raise AddressError(
+            f"--clock-memory needs a marker byte number like 100 or MB100, not {text!r}"
+        )
+    return int(digits)

@@ -9,6 +9,9 @@ from nasaq.ir import (
     Area,
     Block,
     BlockKind,
+    BlockRef,
+    CallArg,
+    CallInfo,
     Constant,
     ConstType,
     Direct,
@@ -109,6 +112,14 @@ def P(byte: int, bit: int = 0, area: Area | None = None) -> Constant:  # noqa: N
 
     pattern = area_pointer(area, byte, bit) if area else internal_pointer(byte, bit)
     return Constant(ConstType.POINTER, pattern, pattern, f"P#{byte}.{bit}")
+
+
+def sfc(number: int, **args: Operand) -> Instruction:
+    """``CALL SFC number (NAME := operand, ...)``."""
+    info = CallInfo(
+        BlockRef(BlockKind.SFC, number), None, tuple(CallArg(k, v) for k, v in args.items())
+    )
+    return Instruction("CALL", call=info)
 
 
 def reg(name: str) -> Register:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from builder import INT, MW, REAL, ins, reg, run_ob1, stw_bits
+from builder import INT, MW, REAL, ins, reg, run_ob1, sfc, stw_bits
 
 from nasaq.cpu import Profile
 from nasaq.ir import Instruction, Origin
@@ -147,3 +147,21 @@ def test_failed_assertion_names_its_operands() -> None:
         ins("SET"), ins("=", M(1, 2)), Instruction("__ASSERT==", M(1, 2), operand2=M(1, 3))
     )
     assert "assertion failed: M 1.2 == M 1.3 is false" in (cpu.stop_reason or "")
+
+
+def test_awlsim_sfc_minus_3_is_a_stop_requested_by_the_program() -> None:
+    for kind in (1, 2):
+        cpu = run_ob1(sfc(-3, SHUTDOWN_TYPE=INT(kind)), ins("L", INT(7)), ins("T", MW(0)))
+        assert cpu.mode == "STOP"
+        assert cpu.stopped_by_program
+        assert cpu.stop_code == "SIM502"
+        assert cpu.read(MW(0)) == 0
+    cpu = run_ob1(ins("L", INT(1)), ins("T", MW(2)), sfc(-3, SHUTDOWN_TYPE=MW(2)))
+    assert cpu.stopped_by_program
+    cpu = run_ob1(sfc(-3, SHUTDOWN_TYPE=INT(3)))
+    assert cpu.stop_code == "SIM526"
+    assert not cpu.stopped_by_program
+    assert "SHUTDOWN_TYPE" in (cpu.stop_reason or "")
+    cpu = run_ob1(sfc(-3, SHUTDOWN_TYPE=INT(1)), test_ops=False)
+    assert cpu.stop_code == "SIM506"
+    assert not cpu.stopped_by_program

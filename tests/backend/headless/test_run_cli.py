@@ -192,3 +192,37 @@ def test_a_simulator_bug_is_stop_sim500_not_a_traceback(
     assert state["mode"] == "STOP"
     assert state["stop_reason"].endswith("(SIM500)")
     assert "boom" in err.getvalue()
+
+
+CLOCK = """\
+ORGANIZATION_BLOCK OB 1
+BEGIN
+      A     M    100.0;
+      FN    M    101.0;
+      JCN   skip;
+      L     MW    10;
+      +     1;
+      T     MW    10;
+skip: NOP   0;
+END_ORGANIZATION_BLOCK
+"""
+
+
+def test_clock_memory_option_drives_the_marker_byte(tmp_path: Path) -> None:
+    """``--clock-memory 100``: M 100.0 is the 10 Hz bit; 1 s of scans sees 10 falling edges."""
+    code, state, _ = _run(tmp_path, CLOCK, "--cycles", "101", "--clock-memory", "MB100")
+    assert code == 0
+    assert state is not None
+    assert state["M"]["11"] == 10
+    code, state, _ = _run(tmp_path, CLOCK, "--cycles", "101")
+    assert code == 0
+    assert state is not None
+    assert "11" not in state["M"]
+
+
+@pytest.mark.parametrize("value", ["2048", "MX1", "-1"])
+def test_a_bad_clock_memory_byte_is_refused(tmp_path: Path, value: str) -> None:
+    code, state, err = _run(tmp_path, CLOCK, "--clock-memory", value)
+    assert code == 2
+    assert state is None
+    assert "clock memory" in err or "--clock-memory" in err
