@@ -1,0 +1,465 @@
+"""Builds ``nasaq.lang.scl.ast`` nodes while the LALR parser reduces (no parse tree).
+
+Each method is named after a rule or alias of ``grammars/scl.lark`` and receives that rule's
+children: tokens (named terminals; anonymous punctuation is filtered out by Lark) and what the
+methods of its sub-rules returned. Positions come from tokens and child nodes.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from lark import Token
+
+from nasaq.lang.scl import ast
+from nasaq.lang.stl.build import loc as token_loc
+
+_STMT_TYPES = (
+    ast.Assign,
+    ast.CallStmt,
+    ast.If,
+    ast.Case,
+    ast.For,
+    ast.While,
+    ast.Repeat,
+    ast.Exit,
+    ast.Continue,
+    ast.Return,
+    ast.Goto,
+    ast.Label,
+    ast.Empty,
+    ast.Region,
+    ast.Bad,
+)
+_SECTION_TYPES = (ast.VarSection, ast.ConstSection, ast.LabelSection)
+
+
+_NOWHERE = ast.Loc(1, 1, 1, 1)
+
+
+def loc_of(item: Any) -> ast.Loc:
+    if isinstance(item, Token):
+        return token_loc(item)
+    if isinstance(item, list):
+        return loc_of(item[-1]) if item else _NOWHERE
+    found: ast.Loc = item.loc
+    return found
+
+
+def span(first: Any, last: Any) -> ast.Loc:
+    start, end = loc_of(first), loc_of(last)
+    if isinstance(last, ast.Block):
+        end = last.end
+    return ast.Loc(start.line, start.column, end.end_line, end.end_column)
+
+
+def _nodes(children: list[Any]) -> list[Any]:
+    return [child for child in children if not isinstance(child, Token)]
+
+
+def _stmts(children: list[Any]) -> list[ast.Stmt]:
+    return [child for child in children if isinstance(child, _STMT_TYPES)]
+
+
+class _Title(str):
+    pass
+
+
+class _Flag(str):
+    pass
+
+
+class _Prop(tuple[str, str]):
+    pass
+
+
+class _Attributes(list[ast.Attribute]):
+    pass
+
+
+class _Source:
+    """A DB's STRUCT or the FB/UDT it is made of (a UDT's STRUCT is one too)."""
+
+    def __init__(self, node: ast.StructType | ast.BlockName) -> None:
+        self.node = node
+
+
+class _Stmts(list[ast.Stmt]):
+    pass
+
+
+class _Code(list[ast.Stmt]):
+    begin = False
+
+
+class AstBuilder:
+    """Rule callbacks (a plain object, not a ``lark.Transformer``: Lark then builds its own
+    helper rules directly; see the STL builder for why)."""
+
+    # ---- file and blocks --------------------------------------------------------------------
+
+    def start(self, children: list[Any]) -> list[Any]:
+        return _nodes(children)
+
+    def block_id(self, children: list[Any]) -> ast.BlockName:
+        token: Token = children[0]
+        text = str(token)
+        if token.type == "QSYM":
+            return ast.BlockName(text[1:-1], quoted=True, loc=token_loc(token))
+        compact = text.replace(" ", "").replace("\t", "")
+        absolute = token.type == "ADDR"
+        return ast.BlockName(compact if absolute else text, absolute=absolute, loc=token_loc(token))
+
+    def _make_block(self, children: list[Any], kind: str) -> ast.Block:
+        name: ast.BlockName = children[1]
+        block = ast.Block(kind=kind, name=name, loc=span(children[0], name))
+        block.end = token_loc(children[-1])
+        parts = children[2:-1]
+        if kind == "FUNCTION":
+            block.return_type = parts.pop(0)
+        for child in parts:
+            if isinstance(child, _Title):
+                block.title = str(child)
+            elif isinstance(child, _Prop):
+                block.props[child[0]] = child[1]
+            elif isinstance(child, _Flag):
+                block.flags.append(str(child))
+            elif isinstance(child, _Attributes):
+                block.attributes.extend(child)
+            elif isinstance(child, _SECTION_TYPES):
+                block.sections.append(child)
+            elif isinstance(child, _Code):
+                block.begin = child.begin
+                block.code.extend(child)
+            elif isinstance(child, ast.Bad):
+                block.bad.append(child)
+            elif isinstance(child, _Source):
+                block.sources.append(child.node)
+        return block
+
+    def org_block(self, children: list[Any]) -> ast.Block:
+        return self._make_block(children, "ORGANIZATION_BLOCK")
+
+    def fb_block(self, children: list[Any]) -> ast.Block:
+        return self._make_block(children, "FUNCTION_BLOCK")
+
+    def fc_block(self, children: list[Any]) -> ast.Block:
+        return self._make_block(children, "FUNCTION")
+
+    def program_block(self, children: list[Any]) -> ast.Block:
+        return self._make_block(children, "PROGRAM")
+
+    def db_block(self, children: list[Any]) -> ast.Block:
+        return self._make_block(children, "DATA_BLOCK")
+
+    def udt_block(self, children: list[Any]) -> ast.Block:
+        parts = [
+            _Source(child) if isinstance(child, ast.StructType) else child for child in children
+        ]
+        return self._make_block(parts, "TYPE")
+
+    def db_source(self, children: list[Any]) -> _Source:
+        return _Source(children[0])
+
+    # ---- header -----------------------------------------------------------------------------
+
+    def title(self, children: list[Any]) -> _Title:
+        text = str(children[1])[1:].strip()
+        if len(text) >= 2 and text[0] == text[-1] and text[0] in "'\"":
+            text = text[1:-1]
+        return _Title(text)
+
+    def header_prop(self, children: list[Any]) -> _Prop:
+        key, value = children
+        text = str(value).strip()
+        if len(text) >= 2 and text[0] == text[-1] == "'":
+            text = text[1:-1]
+        return _Prop((str(key).upper(), text))
+
+    def flag(self, children: list[Any]) -> _Flag:
+        return _Flag(str(children[0]).upper())
+
+    def attributes(self, children: list[Any]) -> _Attributes:
+        return _Attributes(child for child in children if isinstance(child, ast.Attribute))
+
+    def attribute(self, children: list[Any]) -> ast.Attribute:
+        name, value = children
+        return ast.Attribute(str(name), str(value)[1:-1], loc=span(name, value))
+
+    # ---- declarations -----------------------------------------------------------------------
+
+    def var_section(self, children: list[Any]) -> ast.VarSection:
+        keyword: Token = children[0]
+        words = str(keyword).upper().split()
+        decls = [child for child in children if isinstance(child, ast.VarDecl | ast.Bad)]
+        modifier = words[1] if len(words) > 1 else None
+        return ast.VarSection(words[0], decls, modifier, loc=span(keyword, children[-1]))
+
+    def const_section(self, children: list[Any]) -> ast.ConstSection:
+        decls = [child for child in children if isinstance(child, ast.ConstDecl | ast.Bad)]
+        return ast.ConstSection(decls, loc=span(children[0], children[-1]))
+
+    def label_section(self, children: list[Any]) -> ast.LabelSection:
+        names = [str(child) for child in children if child.type == "IDENT"]
+        return ast.LabelSection(names, loc=span(children[0], children[-1]))
+
+    def const_decl(self, children: list[Any]) -> ast.ConstDecl:
+        name, value = children
+        return ast.ConstDecl(str(name), value, loc=span(name, value))
+
+    def var_decl(self, children: list[Any]) -> ast.VarDecl:
+        names = [child for child in children if isinstance(child, ast.DeclName)]
+        at_name = None
+        type_node: ast.TypeNode | None = None
+        init: list[ast.InitItem] | None = None
+        for index, child in enumerate(children):
+            if isinstance(child, Token) and child.type == "AT":
+                at_name = str(children[index + 1])
+            elif isinstance(child, ast.NamedType | ast.ArrayType | ast.StructType):
+                type_node = child
+            elif isinstance(child, list):
+                init = child
+        assert type_node is not None
+        return ast.VarDecl(names, type_node, init, at_name, loc=span(names[0], children[-1]))
+
+    def decl_name(self, children: list[Any]) -> ast.DeclName:
+        token: Token = children[0]
+        attributes = list(children[1]) if len(children) > 1 else []
+        quoted = token.type == "QSYM"
+        text = str(token)[1:-1] if quoted else str(token)
+        return ast.DeclName(text, quoted, attributes, loc=token_loc(token))
+
+    def init_list(self, children: list[Any]) -> list[ast.InitItem]:
+        return list(children)
+
+    def init_repeat(self, children: list[Any]) -> ast.InitRepeat:
+        count: Token = children[0]
+        values = children[1] if len(children) > 1 else []
+        return ast.InitRepeat(str(count), values, loc=span(count, children[-1]))
+
+    def init_brackets(self, children: list[Any]) -> ast.InitList:
+        values: list[ast.InitItem] = children[0]
+        return ast.InitList(values, loc=span(values[0], values[-1]))
+
+    def named_type(self, children: list[Any]) -> ast.NamedType:
+        token: Token = children[0]
+        if token.type == "QSYM":
+            return ast.NamedType(str(token)[1:-1], quoted=True, loc=token_loc(token))
+        length = children[1] if len(children) > 1 else None
+        text = str(token)
+        if token.type == "ADDR":
+            text = text.replace(" ", "").replace("\t", "")
+        return ast.NamedType(text, length=length, loc=span(token, children[-1]))
+
+    def type_spec(self, children: list[Any]) -> ast.StructType:
+        found: ast.StructType = children[0]
+        return found
+
+    def array_type(self, children: list[Any]) -> ast.ArrayType:
+        dims = [child for child in children if isinstance(child, ast.Dim)]
+        element = children[-1]
+        return ast.ArrayType(dims, element, loc=span(children[0], element))
+
+    def struct_type(self, children: list[Any]) -> ast.StructType:
+        members = [child for child in children if isinstance(child, ast.VarDecl | ast.Bad)]
+        return ast.StructType(members, loc=span(children[0], children[-1]))
+
+    def dim(self, children: list[Any]) -> ast.Dim:
+        low, high = children
+        return ast.Dim(low, high, loc=span(low, high))
+
+    def open_dim(self, children: list[Any]) -> ast.Dim:
+        return ast.Dim(None, None, loc=token_loc(children[0]))
+
+    # ---- statements -------------------------------------------------------------------------
+
+    def label(self, children: list[Any]) -> ast.Label:
+        return ast.Label(str(children[0]), loc=token_loc(children[0]))
+
+    def empty(self, children: list[Any]) -> ast.Empty:
+        where = token_loc(children[0]) if children else ast.Loc(1, 1, 1, 1)
+        return ast.Empty(loc=where)
+
+    def assign(self, children: list[Any]) -> ast.Assign:
+        target, value = children
+        return ast.Assign(target, value, loc=span(target, value))
+
+    def call_stmt(self, children: list[Any]) -> ast.CallStmt:
+        call: ast.Call = children[0]
+        return ast.CallStmt(call, loc=call.loc)
+
+    def stmts(self, children: list[Any]) -> _Stmts:
+        return _Stmts(_stmts(children))
+
+    def code(self, children: list[Any]) -> _Code:
+        found = _Code(_stmts(children[:1]))
+        found.extend(children[-1])
+        found.begin = _is(children[0], "BEGIN")
+        return found
+
+    def db_values(self, children: list[Any]) -> _Code:
+        found = _Code(_stmts(children))
+        found.begin = True
+        return found
+
+    def if_stmt(self, children: list[Any]) -> ast.If:
+        keyword, condition, _then, body = children[:4]
+        branches = [ast.IfBranch(condition, list(body), loc=span(keyword, condition))]
+        orelse: list[ast.Stmt] | None = None
+        for child in children[4:]:
+            if isinstance(child, ast.IfBranch):
+                branches.append(child)
+            elif isinstance(child, _Else):
+                orelse = list(child)
+        return ast.If(branches, orelse, loc=span(keyword, children[-1]))
+
+    def elsif(self, children: list[Any]) -> ast.IfBranch:
+        keyword, condition, _then, body = children
+        return ast.IfBranch(condition, list(body), loc=span(keyword, condition))
+
+    def else_part(self, children: list[Any]) -> _Else:
+        return _Else(children[-1])
+
+    def case_stmt(self, children: list[Any]) -> ast.Case:
+        branches = [child for child in children if isinstance(child, ast.CaseBranch)]
+        orelse = next((list(child) for child in children if isinstance(child, _Else)), None)
+        return ast.Case(children[1], branches, orelse, loc=span(children[0], children[-1]))
+
+    def case_branch(self, children: list[Any]) -> ast.CaseBranch:
+        values = [child for child in children if isinstance(child, ast.CaseValue)]
+        return ast.CaseBranch(values, list(children[-1]), loc=span(values[0], values[-1]))
+
+    def case_else(self, children: list[Any]) -> _Else:
+        return _Else(children[-1])
+
+    def case_value(self, children: list[Any]) -> ast.CaseValue:
+        high = children[1] if len(children) > 1 else None
+        return ast.CaseValue(children[0], high, loc=span(children[0], children[-1]))
+
+    def neg_literal(self, children: list[Any]) -> ast.Literal:
+        minus, value = children
+        return ast.Literal(value.kind, "-" + value.text, loc=span(minus, value))
+
+    def for_stmt(self, children: list[Any]) -> ast.For:
+        parts = [child for child in children if not isinstance(child, Token)]
+        step = parts[3] if len(parts) == 5 else None
+        return ast.For(
+            parts[0], parts[1], parts[2], step, list(parts[-1]), loc=span(children[0], children[-1])
+        )
+
+    def while_stmt(self, children: list[Any]) -> ast.While:
+        keyword, condition, _do, body = children[:4]
+        return ast.While(condition, list(body), loc=span(keyword, children[-1]))
+
+    def repeat_stmt(self, children: list[Any]) -> ast.Repeat:
+        keyword, body, _until, condition = children[:4]
+        return ast.Repeat(list(body), condition, loc=span(keyword, children[-1]))
+
+    def exit_stmt(self, children: list[Any]) -> ast.Exit:
+        return ast.Exit(loc=token_loc(children[0]))
+
+    def continue_stmt(self, children: list[Any]) -> ast.Continue:
+        return ast.Continue(loc=token_loc(children[0]))
+
+    def return_stmt(self, children: list[Any]) -> ast.Return:
+        return ast.Return(loc=token_loc(children[0]))
+
+    def goto_stmt(self, children: list[Any]) -> ast.Goto:
+        return ast.Goto(str(children[1]), loc=span(children[0], children[1]))
+
+    def region(self, children: list[Any]) -> ast.Region:
+        head: Token = children[0]
+        title = str(head)[len("REGION") :].strip()
+        return ast.Region(title, list(children[1]), loc=span(head, children[-1]))
+
+    def bad(self, children: list[Any]) -> ast.Bad:
+        return ast.Bad(loc=token_loc(children[0]))
+
+    # ---- expressions ------------------------------------------------------------------------
+
+    def binary(self, children: list[Any]) -> ast.Binary:
+        left, op, right = children
+        return ast.Binary(str(op).upper(), left, right, loc=span(left, right))
+
+    def unary(self, children: list[Any]) -> ast.Unary:
+        op, operand = children
+        return ast.Unary(str(op).upper(), operand, loc=span(op, operand))
+
+    def paren(self, children: list[Any]) -> ast.Paren:
+        inner = children[0]
+        where = loc_of(inner)
+        return ast.Paren(
+            inner, loc=ast.Loc(where.line, where.column - 1, where.end_line, where.end_column + 1)
+        )
+
+    def literal(self, children: list[Any]) -> ast.Literal:
+        token: Token = children[0]
+        kind = "BOOL" if token.type in ("TRUE", "FALSE") else token.type
+        text = str(token).upper() if kind == "BOOL" else str(token)
+        return ast.Literal(kind, text, loc=token_loc(token))
+
+    def call(self, children: list[Any]) -> ast.Call:
+        callee = children[0]
+        args = [child for child in children[1:] if isinstance(child, ast.Arg)]
+        last = args[-1] if args else callee
+        return ast.Call(callee, args, loc=span(callee, last))
+
+    def positional(self, children: list[Any]) -> ast.Arg:
+        value = children[0]
+        return ast.Arg(None, value, loc=loc_of(value))
+
+    def named(self, children: list[Any]) -> ast.Arg:
+        name, value = children
+        return ast.Arg(str(name), value, loc=span(name, value))
+
+    def output(self, children: list[Any]) -> ast.Arg:
+        name, value = children
+        return ast.Arg(str(name), value, output=True, loc=span(name, value))
+
+    def name(self, children: list[Any]) -> ast.Name:
+        return ast.Name(str(children[0]), loc=token_loc(children[0]))
+
+    def local(self, children: list[Any]) -> ast.Local:
+        return ast.Local(str(children[0])[1:], loc=token_loc(children[0]))
+
+    def symbol(self, children: list[Any]) -> ast.Symbol:
+        return ast.Symbol(str(children[0])[1:-1], loc=token_loc(children[0]))
+
+    def address(self, children: list[Any]) -> ast.Address:
+        return ast.Address(_compact(children[0]), loc=token_loc(children[0]))
+
+    def indexed_address(self, children: list[Any]) -> ast.IndexedAddress:
+        area: Token = children[0]
+        return ast.IndexedAddress(_compact(area), list(children[1:]), loc=span(area, children[-1]))
+
+    def member(self, children: list[Any]) -> ast.Member:
+        base, token = children
+        part: ast.Name | ast.Symbol | ast.Address
+        if token.type == "QSYM":
+            part = self.symbol([token])
+        elif token.type == "DB_ADDR":
+            part = self.address([token])
+        else:
+            part = self.name([token])
+        return ast.Member(base, part, loc=span(base, token))
+
+    def indexed_member(self, children: list[Any]) -> ast.Member:
+        base = children[0]
+        part = self.indexed_address(children[1:])
+        return ast.Member(base, part, loc=span(base, part))
+
+    def index(self, children: list[Any]) -> ast.Index:
+        base = children[0]
+        return ast.Index(base, list(children[1:]), loc=span(base, children[-1]))
+
+
+class _Else(list[ast.Stmt]):
+    pass
+
+
+def _is(child: Any, kind: str) -> bool:
+    return isinstance(child, Token) and child.type == kind
+
+
+def _compact(token: Token) -> str:
+    return str(token).replace(" ", "").replace("\t", "")
