@@ -377,6 +377,23 @@ class AstBuilder:
 
     # ---- expressions ------------------------------------------------------------------------
 
+    def expr(self, children: list[Any]) -> ast.Expr:
+        """A flat ``operand (op operand)+`` list → the ``Binary`` tree of S7-SCL precedence
+        (precedence climbing; every level is left-associative)."""
+        operands: list[Any] = [children[0]]
+        ops: list[Token] = []
+        for position in range(1, len(children), 2):
+            op: Token = children[position]
+            level = _LEVEL[op.type]
+            while ops and _LEVEL[ops[-1].type] >= level:
+                _reduce(operands, ops)
+            ops.append(op)
+            operands.append(children[position + 1])
+        while ops:
+            _reduce(operands, ops)
+        found: ast.Expr = operands[0]
+        return found
+
     def binary(self, children: list[Any]) -> ast.Binary:
         left, op, right = children
         return ast.Binary(str(op).upper(), left, right, loc=span(left, right))
@@ -451,6 +468,34 @@ class AstBuilder:
     def index(self, children: list[Any]) -> ast.Index:
         base = children[0]
         return ast.Index(base, list(children[1:]), loc=span(base, children[-1]))
+
+
+# Binding strength of the binary operators below ``**`` (higher binds tighter).
+_LEVEL = {
+    "OR": 1,
+    "XOR": 2,
+    "AND": 3,
+    "AMP": 3,
+    "EQ": 4,
+    "NE": 4,
+    "LT": 5,
+    "GT": 5,
+    "LE": 5,
+    "GE": 5,
+    "PLUS": 6,
+    "MINUS": 6,
+    "STAR": 7,
+    "SLASH": 7,
+    "MOD": 7,
+    "DIV": 7,
+}
+
+
+def _reduce(operands: list[Any], ops: list[Token]) -> None:
+    right = operands.pop()
+    left = operands.pop()
+    op = ops.pop()
+    operands.append(ast.Binary(str(op).upper(), left, right, loc=span(left, right)))
 
 
 class _Else(list[ast.Stmt]):

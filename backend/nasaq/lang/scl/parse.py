@@ -10,17 +10,25 @@ END_xxx of the constructs still open are supplied (an ``IF`` without ``END_IF`` 
 ``END_FUNCTION``). No error is reported again until a real token has been accepted, so a typo
 does not cascade. Reserved words the contextual lexer read as names (no rule accepts them
 there) are turned back into keywords first, so the message names them.
+
+Speed: on the good path the driver lexes (``_Driver.tokens``) and runs the LALR table
+(``_Driver.feed_fast``, over a flattened copy of Lark's table) itself, with gc off; recovery
+uses Lark's ``ParserState`` on the same stacks. ``python -m nasaq.lang.scl.bench`` measures it.
 """
 
 from __future__ import annotations
 
+import gc
 import re
+import weakref
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from functools import cache
 from typing import Any
 
 from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedCharacters, UnexpectedToken
+from lark.parse_tree_builder import ExpandSingleChild
 from lark.parsers.lalr_analysis import Shift
 
 from nasaq.diagnostics import Diagnostic, render
@@ -206,6 +214,35 @@ def expected_text(choices: set[str]) -> str:
     return " or ".join(names)
 
 
+# A parser state's actions: a shift (or goto) is the next state, a reduction is
+# ``(size, rule name, callback)``. Keys are plain strings, so lookups never reach ``Token.__eq__``.
+_Action = int | tuple[int, str, Callable[[list[Any]], Any] | None]
+_Table = dict[Any, dict[str, _Action]]
+_TABLES: weakref.WeakKeyDictionary[Lark, _Table] = weakref.WeakKeyDictionary()
+
+
+def _table(lark: Lark, states: dict[Any, dict[str, Any]], callbacks: dict[Any, Any]) -> _Table:
+    """Lark's LALR table flattened for ``_Driver.feed_fast``, made once per parser (on its first
+    parse, so callbacks a test installed after building the parser are the ones called)."""
+    found = _TABLES.get(lark)
+    if found is None:
+        found = {}
+        for state, actions in states.items():
+            row: dict[str, _Action] = {}
+            for kind, (what, arg) in actions.items():
+                if what is Shift:
+                    row[str(kind)] = arg
+                else:
+                    size = len(arg.expansion)
+                    callback = callbacks[arg]
+                    if size == 1 and isinstance(callback, ExpandSingleChild):
+                        callback = None  # a ``?rule`` of one symbol: its value is the child's
+                    row[str(kind)] = (size, str(arg.origin.name), callback)
+            found[state] = row
+        _TABLES[lark] = found
+    return found
+
+
 class _Driver:
     def __init__(self, file: str, text: str, lark: Lark) -> None:
         self.file = file
@@ -217,6 +254,11 @@ class _Driver:
         self.interactive = lark.parse_interactive(text)
         self.state = self.interactive.parser_state
         self.states: dict[Any, dict[str, Any]] = self.state.parse_conf.states
+        callbacks: dict[Any, Any] = self.state.parse_conf.callbacks
+        self.table = _table(lark, self.states, callbacks)
+        self.token_callbacks = {
+            kind: callback for kind, callback in callbacks.items() if isinstance(kind, str)
+        }
         self.last: Token | None = None
 
     # ---- reporting ----------------------------------------------------------------------
@@ -276,6 +318,88 @@ class _Driver:
                 stack.pop()
                 values.pop()
 
+    def tokens(self) -> Iterator[Token]:
+        """The contextual lexer's tokens, as ``lexer_thread.lex`` makes them but without its
+        per-token layers (generator, scanner and line-counter calls). Where nothing matches in
+        the current parser state, Lark's own lexer is asked, so it raises what it raises."""
+        thread: Any = self.interactive.lexer_thread
+        lex_state = thread.state
+        contextual = thread.lexer
+        counter = lex_state.line_ctr
+        text: str = lex_state.text.text
+        end: int = lex_state.text.end
+        stack = self.state.state_stack
+        plans: dict[Any, tuple[Any, ...]] = {}
+        make: Any = Token._future_new
+        while counter.char_pos < end:
+            state = stack[-1]
+            plan = plans.get(state)
+            if plan is None:
+                lexer = contextual.lexers[state]
+                patterns = lexer.scanner._mres  # builds the scanner and its callbacks
+                plan = (patterns, lexer.ignore_types, lexer.newline_types, lexer.callback)
+                plans[state] = plan
+            patterns, ignore, newlines, callbacks = plan
+            pos = counter.char_pos
+            for pattern in patterns:
+                found = pattern.match(text, pos, end)
+                if found is not None:
+                    break
+            else:
+                yield next(contextual.lex(lex_state, self.state))
+                continue
+            value: str = found.group()
+            kind: str = found.lastgroup or ""
+            line = counter.line
+            column = counter.column
+            stop = pos + len(value)
+            if kind in newlines:
+                count = value.count("\n")
+                if count:
+                    counter.line = line + count
+                    counter.line_start_pos = pos + value.rindex("\n") + 1
+            counter.char_pos = stop
+            counter.column = stop - counter.line_start_pos + 1
+            if kind in ignore and kind not in callbacks:
+                continue
+            token = make(kind, value, pos, line, column, counter.line, counter.column, stop)
+            if kind in callbacks:
+                token = callbacks[kind](token)
+            if kind not in ignore:
+                lex_state.last_token = token
+                yield token
+
+    def feed_fast(self, token: Token) -> bool:
+        """``ParserState.feed_token`` without its per-step overheads (asserts, ``Rule`` and
+        ``Token`` comparisons); False where Lark would raise ``UnexpectedToken``, with the
+        stacks reduced as far as Lark would have reduced them."""
+        table = self.table
+        stack = self.state.state_stack
+        values = self.state.value_stack
+        kind = token.type
+        while True:
+            action = table[stack[-1]].get(kind)
+            if action is None:
+                return False
+            if action.__class__ is int:
+                stack.append(action)
+                callback = self.token_callbacks.get(kind) if self.token_callbacks else None
+                values.append(token if callback is None else callback(token))
+                return True
+            size, name, reduce = action  # type: ignore[misc]
+            if reduce is None:
+                del stack[-1]
+                stack.append(table[stack[-1]][name])
+                continue
+            if size:
+                children = values[-size:]
+                del stack[-size:]
+                del values[-size:]
+            else:
+                children = []
+            values.append(reduce(children))
+            stack.append(table[stack[-1]][name])
+
     def try_feed(self, token: Token) -> bool:
         try:
             self.state.feed_token(token)
@@ -322,21 +446,19 @@ class _Driver:
 
     def run(self) -> list[Any]:
         lexer: Any = self.interactive.lexer_thread
-        state = self.state
         while True:
             try:
-                for token in lexer.lex(state):
-                    self.retype(token)
+                for token in self.tokens():
+                    kind = token.type
+                    if kind == "IDENT" or kind == "HEADER_VALUE":
+                        self.retype(token)
                     self.last = token
                     if self.skipping or self.quiet:
                         if not self.feed(token):
                             return self.harvest()
                         continue
-                    try:
-                        state.feed_token(token)
-                    except UnexpectedToken:
-                        if not self.syntax_error(token):
-                            return self.harvest()
+                    if not self.feed_fast(token) and not self.syntax_error(token):
+                        return self.harvest()
                 return self.finish()
             except UnexpectedCharacters as error:
                 at: int = error.pos_in_stream or 0
@@ -497,8 +619,14 @@ def parse_source(file: str, text: str, lark: Lark | None = None) -> ParseResult:
     ``lark`` replaces the shared parser (tests pass one that records the rules it reduces)."""
     if text.startswith("\ufeff"):
         text = text[1:]
-    driver = _Driver(file, text, lark or parser())
-    items = driver.run()
+    gc_was_enabled = gc.isenabled()
+    gc.disable()  # the parse allocates many small objects; collection passes make it quadratic
+    try:
+        driver = _Driver(file, text, lark or parser())
+        items = driver.run()
+    finally:
+        if gc_was_enabled:
+            gc.enable()
     blocks = [item for item in items if isinstance(item, ast.Block)]
     pragmas = [
         attribute

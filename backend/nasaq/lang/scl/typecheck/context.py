@@ -1,0 +1,102 @@
+"""The state of checking one block: where names are looked up, the types already computed
+(each expression is typed, and reported on, once) and the diagnostics found."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from nasaq.diagnostics import Diagnostic
+from nasaq.ir import BlockKind
+from nasaq.lang.layout import SECTION_ORDER
+from nasaq.lang.scl import ast
+from nasaq.lang.scl.bind import UNKNOWN, Constant, SclBlock, SclIndex, Variable
+from nasaq.lang.scl.format import expr as expr_text
+from nasaq.lang.scl.typecheck.types import ERROR, DbRef, Type
+from nasaq.lang.stl.diag import problem
+from nasaq.lang.types import BlockType, DataType, StructType
+
+ExpressionRule = Callable[["Context", Any], Type]
+
+
+class Context:
+    def __init__(
+        self,
+        index: SclIndex,
+        block: SclBlock,
+        expressions: dict[type, ExpressionRule],
+    ) -> None:
+        self.index = index
+        self.block = block
+        self.expressions = expressions
+        self.diagnostics: list[Diagnostic] = []
+        self._types: dict[int, Type] = {}
+        self._busy: set[int] = set()
+        self.reported: set[str] = set()  # mistakes reported once per block (undeclared names)
+
+    @property
+    def file(self) -> str:
+        return self.block.file
+
+    def report(self, code: str, loc: ast.Loc, **params: Any) -> Type:
+        """Records a diagnostic; returns ``ERROR``, the type of what was wrong."""
+        self.diagnostics.append(problem(code, self.file, loc, **params))
+        return ERROR
+
+    def type_of(self, node: ast.Expr) -> Type:
+        """The type of an expression, computed (and its problems reported) once."""
+        key = id(node)
+        found = self._types.get(key)
+        if found is not None:
+            return found
+        if key in self._busy:  # a CONST defined through itself
+            return ERROR
+        self._busy.add(key)
+        try:
+            found = self.expressions[type(node)](self, node)
+        finally:
+            self._busy.discard(key)
+        self._types[key] = found
+        return found
+
+    @staticmethod
+    def text(node: ast.Expr) -> str:
+        return expr_text(node)
+
+    # ---- names ------------------------------------------------------------------------------
+
+    def variable(self, name: str) -> Variable | None:
+        return self.block.variables.get(name.casefold())
+
+    def constant(self, name: str) -> Constant | None:
+        return self.block.constants.get(name.casefold())
+
+    @staticmethod
+    def declared(data_type: DataType) -> Type:
+        """A declared type as an expression's type (an unknown one is silent)."""
+        return ERROR if data_type == UNKNOWN else data_type
+
+    def members(self, value: Type) -> dict[str, DataType] | None:
+        """The members a value of this type has (casefolded names), None if it has none."""
+        if isinstance(value, DbRef):
+            if value.number is None:
+                return None
+            db = self.index.get(BlockKind.DB, value.number)
+            if db is None or db.db_type is None:
+                return None
+            value = db.db_type
+        if isinstance(value, StructType):
+            return {part.name.casefold(): part.type for part in value.fields}
+        if isinstance(value, BlockType):
+            expansion = self.index.expand(value)
+            if isinstance(expansion, StructType):
+                return {part.name.casefold(): part.type for part in expansion.fields}
+            if expansion is None:
+                return None
+            return {
+                part.name.casefold(): part.type
+                for section, group in expansion
+                if section in SECTION_ORDER
+                for part in group
+            }
+        return None

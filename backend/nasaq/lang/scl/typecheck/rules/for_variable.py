@@ -1,0 +1,30 @@
+"""Rule: the control variable of FOR is an INT or DINT variable (``SCL221``); the start, end and
+step values must be assignable to it (reported as assignments are)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from nasaq.lang.scl import ast
+from nasaq.lang.scl.typecheck.rules.assignment import store
+from nasaq.lang.scl.typecheck.types import INTEGERS, describe, is_silent, scalar
+from nasaq.lang.types import Elementary
+
+if TYPE_CHECKING:
+    from nasaq.lang.scl.typecheck.context import Context
+
+
+def check(ctx: Context, stmt: ast.Stmt) -> None:
+    if not isinstance(stmt, ast.For):
+        return
+    found = ctx.type_of(stmt.variable)
+    if is_silent(found):
+        return
+    if not isinstance(found, Elementary) or scalar(found) not in INTEGERS:
+        ctx.report(
+            "SCL221", stmt.variable.loc, name=ctx.text(stmt.variable), actual=describe(found)
+        )
+        return
+    for value in (stmt.start, stmt.end, stmt.step):
+        if value is not None:
+            store(ctx, stmt.variable, value)
