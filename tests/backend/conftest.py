@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -10,6 +11,13 @@ from fastapi.testclient import TestClient
 
 from nasaq.api.app import create_app
 from nasaq.settings import Settings
+
+# Test helper modules live beside the tests that use them; this file is loaded however pytest is
+# started (with or without backend/pyproject.toml as its config), so it puts them on the path.
+_HERE = Path(__file__).resolve().parent
+for _folder in ("cpu", "lang", "lang/stl"):
+    if str(_HERE / _folder) not in sys.path:
+        sys.path.insert(0, str(_HERE / _folder))
 
 
 @pytest.fixture

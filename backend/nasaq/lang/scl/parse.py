@@ -32,6 +32,7 @@ from lark.parse_tree_builder import ExpandSingleChild
 from lark.parsers.lalr_analysis import Shift
 
 from nasaq.diagnostics import Diagnostic, render
+from nasaq.lang.lalr_recovery import RecoveringDriver
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.grammar import parser
 from nasaq.lang.stl.build import loc
@@ -243,7 +244,7 @@ def _table(lark: Lark, states: dict[Any, dict[str, Any]], callbacks: dict[Any, A
     return found
 
 
-class _Driver:
+class _Driver(RecoveringDriver):
     def __init__(self, file: str, text: str, lark: Lark) -> None:
         self.file = file
         self.text = text
@@ -274,49 +275,6 @@ class _Driver:
             return False
         self.diagnostics.append(render(code, span(self.file, where), **params))
         return True
-
-    # ---- parser stack helpers -----------------------------------------------------------
-
-    def acceptable(self, kind: str, state: Any = None) -> bool:
-        """Whether the parser would shift ``kind`` now, following its reductions on a copy of
-        the state stack (LALR lookaheads alone can promise a reduction that then fails)."""
-        states = self.states
-        stack = list((state or self.state).state_stack)
-        while True:
-            action = states[stack[-1]].get(kind)
-            if action is None:
-                return False
-            what, rule = action
-            if what is Shift:
-                return True
-            size = len(rule.expansion)
-            if size:
-                del stack[-size:]
-            goto = states[stack[-1]].get(rule.origin.name)
-            if goto is None:
-                return False
-            stack.append(goto[1])
-
-    def synthetic(self, kind: str, near: Token | None) -> Token:
-        if near is None:
-            return Token(kind, "", 0, 1, 1, 1, 1, 0)
-        return Token.new_borrow_pos(kind, "", near)
-
-    def shift_error(self, near: Token | None) -> None:
-        stack = self.state.state_stack
-        values = self.state.value_stack
-        while True:
-            while "ERROR" not in self.states[stack[-1]] and len(stack) > 1:
-                stack.pop()
-                values.pop()
-            try:
-                self.state.feed_token(self.synthetic("ERROR", near))
-                return
-            except UnexpectedToken:
-                if len(stack) == 1:
-                    return
-                stack.pop()
-                values.pop()
 
     def tokens(self) -> Iterator[Token]:
         """The contextual lexer's tokens, as ``lexer_thread.lex`` makes them but without its

@@ -25,9 +25,9 @@ from typing import Any
 
 from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedCharacters, UnexpectedToken
-from lark.parsers.lalr_analysis import Shift
 
 from nasaq.diagnostics import Diagnostic
+from nasaq.lang.lalr_recovery import RecoveringDriver
 from nasaq.lang.stl import ast
 from nasaq.lang.stl.build import loc
 from nasaq.lang.stl.diag import problem
@@ -228,7 +228,7 @@ def _comment_start(line: str) -> int:
     return -1
 
 
-class _Driver:
+class _Driver(RecoveringDriver):
     def __init__(self, file: str, text: str, lark: Lark) -> None:
         self.file = file
         self.text = text
@@ -256,49 +256,6 @@ class _Driver:
             return False
         self.diagnostics.append(problem(code, self.file, where, **params))
         return True
-
-    # ---- parser stack helpers -----------------------------------------------------------
-
-    def acceptable(self, kind: str) -> bool:
-        """Whether the parser would shift ``kind`` now, following its reductions on a copy of
-        the state stack (LALR lookaheads alone can promise a reduction that then fails)."""
-        states = self.states
-        stack = list(self.state.state_stack)
-        while True:
-            action = states[stack[-1]].get(kind)
-            if action is None:
-                return False
-            what, rule = action
-            if what is Shift:
-                return True
-            size = len(rule.expansion)
-            if size:
-                del stack[-size:]
-            goto = states[stack[-1]].get(rule.origin.name)
-            if goto is None:
-                return False
-            stack.append(goto[1])
-
-    def synthetic(self, kind: str, near: Token | None) -> Token:
-        if near is None:
-            return Token(kind, "", 0, 1, 1, 1, 1, 0)
-        return Token.new_borrow_pos(kind, "", near)
-
-    def shift_error(self, near: Token | None) -> None:
-        stack = self.state.state_stack
-        values = self.state.value_stack
-        while True:
-            while "ERROR" not in self.states[stack[-1]] and len(stack) > 1:
-                stack.pop()
-                values.pop()
-            try:
-                self.state.feed_token(self.synthetic("ERROR", near))
-                return
-            except UnexpectedToken:
-                if len(stack) == 1:  # the start state always shifts ERROR; be safe anyway
-                    return
-                stack.pop()
-                values.pop()
 
     def try_feed(self, token: Token) -> bool:
         try:
