@@ -1,4 +1,4 @@
-"""Block calls at run time: frames, FC parameters by reference, FB instance data, SFCs.
+"""Block calls at run time: frames, FC parameters by reference, FB instance data, SFCs, SFBs.
 
 FC parameters are references ``(buffer, byte, bit)`` resolved when the call executes, so the FC
 reads and writes the actual operand (constants get a fresh scratch copy per call). Timer,
@@ -12,6 +12,8 @@ before; the callee starts with DB = the caller's DI). AR2 is restored after FB c
 every CALL made from an FB (STEP 7's CALL macro keeps the caller's instance base).
 FC parameters of ARRAY, STRUCT, UDT, STRING, DATE_AND_TIME or POINTER type also get a 6-byte DB
 pointer in the caller's local data (the callee's V area), which ``L P##param`` points to.
+The IEC counters and timers (SFB 0-5, ``nasaq.cpu.iec_blocks``) are FBs whose body is Python:
+their calls go through the same instance and parameter handling.
 """
 
 from __future__ import annotations
@@ -21,11 +23,13 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from nasaq.cpu import iec_blocks
 from nasaq.cpu.errors import CpuError, CpuStopError, location
 from nasaq.cpu.memory import read_bytes, write_bytes
 from nasaq.cpu.pointers import ANY_TYPES, area_pointer
 from nasaq.ir import (
     Area,
+    Block,
     BlockKind,
     BlockRef,
     CallArg,
@@ -148,6 +152,7 @@ class Calls:
         self.clock_reset = clock_reset  # restarts the clock memory (awlsim's SFC -4)
         self.tick_offset = 0  # added to the virtual clock for TIME_TCK (moved by SFC -4)
         self._db_ids: dict[int, int] | None = None
+        self._system_fbs: dict[int, Compiled] = {}  # SFB 0-5, made at their first call
 
     # -- entry from generated code --------------------------------------------------------------
     def call(
@@ -166,7 +171,9 @@ class Calls:
                 return
             callee = self.compiled(site.kind, number)
             if callee is None:
-                raise CpuError("SIM506", block=f"{site.kind.value} {number}")
+                callee = self._system_fb(number) if site.kind is BlockKind.SFB else None
+                if callee is None:
+                    raise CpuError("SIM506", block=f"{site.kind.value} {number}")
             keep_ar2 = caller.block.kind is BlockKind.FB and not site.raw
             self._invoke(site, callee, frame, vframe, params, keep_ar2)
         except CpuStopError as stop:
@@ -197,7 +204,8 @@ class Calls:
         saved_db, saved_dbno, saved_di, saved_dino, saved_ar2 = m.db, m.dbno, m.di, m.dino, m.ar2
         callee_params: list[Ref] = []
         fb_instance: tuple[bytearray, int] | None = None
-        if callee.block.kind is BlockKind.FB and not site.raw:
+        kind = callee.block.kind
+        if (kind is BlockKind.FB or kind is BlockKind.SFB) and not site.raw:
             fb_instance = self._enter_fb(site, callee, frame, vframe, params)
         elif not site.raw:
             callee_params = self._fc_params(site, callee, frame, vframe, params)
@@ -719,6 +727,38 @@ class Calls:
             write_bytes(buf, byte, width, value, bit)
         except IndexError:
             raise CpuError("SIM504", address=f"byte {byte} (parameter)") from None
+
+    # -- system function blocks -------------------------------------------------------------------
+    def _system_fb(self, number: int) -> Compiled | None:
+        """SFB ``number`` as an FB whose body is Python (``nasaq.cpu.iec_blocks``), so a call
+        runs through ``_invoke`` like any FB call: instance, parameters in and out, registers."""
+        found = self._system_fbs.get(number)
+        if found is None:
+            body = iec_blocks.BODIES.get(number)
+            if body is None:
+                return None
+            found = self._system_fbs[number] = self._python_fb(number, body)
+        return found
+
+    def _python_fb(self, number: int, body: iec_blocks.Body) -> Compiled:
+        from nasaq.cpu.codegen.compiler import Compiled  # codegen imports this module
+
+        size = iec_blocks.INSTANCE_BYTES[number]
+        name = f"SFB {number}"
+
+        def run(m: Machine, callee_frame: bytearray, frame: bytearray, params: list[Ref]) -> None:
+            buf, base = m.di, (m.ar2 & 0x7FFFF) >> 3
+            if base + size > len(buf):
+                raise CpuError("SIM503", address=f"the instance data of {name} (DI {m.dino})")
+            m.br = body(buf, base, (m.now + self.tick_offset) & iec_blocks.TIME_MASK)
+
+        block = Block(
+            BlockKind.SFB,
+            number,
+            name=iec_blocks.NAMES[number],
+            interface=iec_blocks.INTERFACES[number],
+        )
+        return Compiled(block, run, 0, [], [], [], {}, f"<{name}>", "", {})
 
     # -- system functions -------------------------------------------------------------------------
     def _sfc(
