@@ -5,8 +5,10 @@ type-check every code block.
     index, diagnostics = check_sources(parsed, symbols)
 
 ``diagnostics`` holds the binder's problems (``SCL202``–``SCL210``) and the checker's
-(``SCL201``, ``SCL211``–``SCL222``), sorted by file, line and column. Syntax problems are the
-parser's (``ParseResult.diagnostics``) and are not repeated here.
+(``SCL201``, ``SCL211``–``SCL247``; ``SCL246`` and ``SCL247`` are warnings), sorted by file,
+line and column. Syntax problems are the parser's (``ParseResult.diagnostics``) and are not
+repeated here. The index also knows the instance DBs that ``FB.DB(...)`` calls create
+(``SclIndex.implicit_dbs``).
 """
 
 from __future__ import annotations

@@ -42,6 +42,7 @@ CASES = [
     ("k := #zz;", [("SCL201", 5, 8)]),
     ('k := "Nowhere";', [("SCL201", 5, 8)]),
     ('k := #k + "Speed" + Speed + "Data".count + Half(v := k);', []),
+    ("OK := FALSE; x := OK AND ENO; ENO := x;", []),  # the OK flag and ENO are predefined
     # no cascade: the unknown name is the only message
     ("k := zz + 1 + w;", [("SCL201", 5, 8)]),
     # operand types, implicit conversions (class A) in operations
@@ -114,6 +115,9 @@ CASES = [
     ),
 ]
 
+# The complete programs, for the count of erroneous programs (test_scl_check_corpus.py).
+PROGRAMS = [(HEAD + "  " + body + TAIL, expected) for body, expected in CASES]
+
 
 def _symbols() -> SymbolTable:
     table = SymbolTable()
@@ -147,6 +151,19 @@ def test_fc_return_value() -> None:
     parsed = parse_source("fc.scl", text)
     _index, diagnostics = check_sources([parsed.source])
     assert [(item.code, item.span.line) for item in diagnostics if item.span] == [("SCL213", 5)]
+
+
+def test_an_area_next_to_a_variable_of_its_name() -> None:
+    """``I[i, k]`` reads the input area although a variable ``i`` exists (names are
+    case-insensitive); ``m[2]`` of an array ``m`` is the array (the lexer read both as areas)."""
+    text = (
+        "FUNCTION_BLOCK FB1\nVAR i, k : INT; m : ARRAY[0..3] OF INT; x : BOOL; END_VAR\nBEGIN\n"
+        "  x := I[i, k];\n  k := m[2];\n  k := m[1, 2];\nEND_FUNCTION_BLOCK\n"
+    )
+    parsed = parse_source("areas.scl", text)
+    assert parsed.diagnostics == []
+    _index, diagnostics = check_sources([parsed.source])
+    assert [(item.code, item.span.line) for item in diagnostics if item.span] == [("SCL216", 6)]
 
 
 CORPUS = Path(__file__).parent / "corpus"

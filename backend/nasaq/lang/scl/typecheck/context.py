@@ -33,6 +33,7 @@ class Context:
         self._types: dict[int, Type] = {}
         self._busy: set[int] = set()
         self.reported: set[str] = set()  # mistakes reported once per block (undeclared names)
+        self._db_members: dict[str, Variable] | None = None
 
     @property
     def file(self) -> str:
@@ -66,7 +67,22 @@ class Context:
     # ---- names ------------------------------------------------------------------------------
 
     def variable(self, name: str) -> Variable | None:
-        return self.block.variables.get(name.casefold())
+        """A variable of the block; in a DB's assignment section, a member of the DB."""
+        found = self.block.variables.get(name.casefold())
+        if found is None and self.block.kind is BlockKind.DB:
+            found = self._db_variables().get(name.casefold())
+        return found
+
+    def _db_variables(self) -> dict[str, Variable]:
+        if self._db_members is None:
+            made_of = self.block.db_type
+            members = self.members(made_of) if made_of is not None else None
+            where = self.block.node.name.loc
+            self._db_members = {
+                key: Variable(key, "STAT", data_type, where)
+                for key, data_type in (members or {}).items()
+            }
+        return self._db_members
 
     def constant(self, name: str) -> Constant | None:
         return self.block.constants.get(name.casefold())
@@ -79,12 +95,10 @@ class Context:
     def members(self, value: Type) -> dict[str, DataType] | None:
         """The members a value of this type has (casefolded names), None if it has none."""
         if isinstance(value, DbRef):
-            if value.number is None:
+            made_of = None if value.number is None else self.index.db_type_of(value.number)
+            if made_of is None:
                 return None
-            db = self.index.get(BlockKind.DB, value.number)
-            if db is None or db.db_type is None:
-                return None
-            value = db.db_type
+            value = made_of
         if isinstance(value, StructType):
             return {part.name.casefold(): part.type for part in value.fields}
         if isinstance(value, BlockType):

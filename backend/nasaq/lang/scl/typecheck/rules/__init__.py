@@ -1,7 +1,8 @@
 """The rules of the S7-SCL type checker, one per module.
 
 Expression rules type one kind of node (and report what is wrong with it); statement rules
-look at one statement each. ``EXPRESSIONS`` and ``STATEMENTS`` are what the checker runs.
+look at one statement each; block rules look at a whole block (its declarations, or all of its
+code at once). ``EXPRESSIONS``, ``STATEMENTS`` and ``BLOCKS`` are what the checker runs.
 
 | module | codes | what |
 |---|---|---|
@@ -11,10 +12,18 @@ look at one statement each. ``EXPRESSIONS`` and ``STATEMENTS`` are what the chec
 | ``indexing`` | SCL216, SCL217 | number of indices, indexing a non-array |
 | ``operators`` | SCL211, SCL212 | operand types, implicit conversions |
 | ``calls`` | — | result types of standard functions and FCs |
+| ``call_parameters`` | SCL223–SCL234, SCL247 | the callee and its actual parameters |
 | ``assignment`` | SCL213, SCL214, SCL218 | assignment compatibility |
 | ``assign_input`` | SCL215 | no assignment to an input parameter |
 | ``conditions`` | SCL220 | IF/ELSIF/WHILE/REPEAT conditions are BOOL |
 | ``for_variable`` | SCL221 | FOR variable INT/DINT, bounds assignable to it |
+| ``case_labels`` | SCL235, SCL236 | CASE selector INT, each label value once |
+| ``sign_after_operator`` | SCL246 (warning) | ``A * -B`` |
+| ``loop_jumps`` | SCL237 | EXIT/CONTINUE inside a loop |
+| ``labels`` | SCL238–SCL241, SCL206 | GOTO and jump labels |
+| ``return_value`` | SCL242 | an FC assigns its function value |
+| ``initial_values`` | SCL243–SCL245 | initial values of declarations |
+| ``db_values`` | SCL243 | the assignment section of a DATA_BLOCK |
 """
 
 from __future__ import annotations
@@ -27,13 +36,20 @@ from nasaq.lang.scl.typecheck.context import Context, ExpressionRule
 from nasaq.lang.scl.typecheck.rules import (
     assign_input,
     assignment,
-    calls,
+    call_parameters,
+    case_labels,
     conditions,
+    db_values,
     for_variable,
     indexing,
+    initial_values,
+    labels,
     literals,
+    loop_jumps,
     members,
     operators,
+    return_value,
+    sign_after_operator,
     undeclared,
 )
 
@@ -46,17 +62,29 @@ EXPRESSIONS: dict[type, ExpressionRule] = {
     ast.IndexedAddress: indexing.indexed_address,
     ast.Member: members.member,
     ast.Index: indexing.index,
-    ast.Call: calls.call,
+    ast.Call: call_parameters.call,
     ast.Unary: operators.unary,
     ast.Binary: operators.binary,
     ast.Paren: operators.paren,
 }
 
 StatementRule = Callable[[Context, ast.Stmt], None]
+BlockRule = Callable[[Context], None]
 
 STATEMENTS: list[StatementRule] = [
     assign_input.check,
     assignment.check,
     conditions.check,
     for_variable.check,
+    case_labels.check,
+    sign_after_operator.check,
+]
+
+# Run for every block after its code (if it has code): the declarations, the DB's values.
+BLOCKS: list[BlockRule] = [
+    initial_values.check,
+    db_values.check,
+    loop_jumps.check,
+    labels.check,
+    return_value.check,
 ]

@@ -1,6 +1,6 @@
 """Calls as expressions: the result type of standard functions (``*_TO_*``, numeric, shift,
 string functions, S5 timers/counters) and of user FCs. The arguments are typed (so their own
-problems are reported); parameter checks at calls come with the call rule (see README)."""
+problems are reported); the parameters are checked by ``call_parameters``, which runs this."""
 
 from __future__ import annotations
 
@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 from nasaq.ir import BlockKind
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.typecheck.operands import function_value
+from nasaq.lang.scl.typecheck.signatures import S5_FUNCTIONS
 from nasaq.lang.scl.typecheck.types import (
     ANYTHING,
     CONVERSIONS,
@@ -32,14 +33,6 @@ FIXED_RESULTS = {
     "TRUNC": "DINT",
     "LEN": "INT",
     "FIND": "INT",
-    "S_PULSE": "S5TIME",
-    "S_PEXT": "S5TIME",
-    "S_ODT": "S5TIME",
-    "S_ODTS": "S5TIME",
-    "S_OFFDT": "S5TIME",
-    "S_CU": "WORD",
-    "S_CD": "WORD",
-    "S_CUD": "WORD",
     "WORD_BCD_TO_INT": "INT",
     "INT_TO_BCD_WORD": "WORD",
     "DWORD_BCD_TO_DINT": "DINT",
@@ -53,7 +46,13 @@ STRING_RESULTS = frozenset(
 SAME_AS_INPUT = frozenset(["ABS", "SHL", "SHR", "ROL", "ROR"])
 UNTYPED = frozenset(["MAX", "MIN", "LIMIT", "SEL", "MUX"])
 STANDARD = (
-    REAL_FUNCTIONS | FIXED_RESULTS.keys() | STRING_RESULTS | SAME_AS_INPUT | UNTYPED | CONVERSIONS
+    REAL_FUNCTIONS
+    | FIXED_RESULTS.keys()
+    | S5_FUNCTIONS.keys()
+    | STRING_RESULTS
+    | SAME_AS_INPUT
+    | UNTYPED
+    | CONVERSIONS
 )
 
 
@@ -66,7 +65,7 @@ def call(ctx: Context, node: ast.Call) -> Type:
             return _standard(upper, node, values)
     if isinstance(callee, ast.Member):
         base = ctx.type_of(callee.base)  # FB1.DB1(...): an FB called with its instance DB
-        if isinstance(base, BlockRef) and base.kind is BlockKind.FB:
+        if isinstance(base, BlockRef):  # (an FC with a DB is the call rule's to report)
             return ANYTHING
     target = ctx.type_of(callee)
     if target is ERROR:
@@ -89,6 +88,8 @@ def _standard(name: str, node: ast.Call, values: list[Type]) -> Type:
         return Elementary("REAL")
     if name in FIXED_RESULTS:
         return Elementary(FIXED_RESULTS[name])
+    if name in S5_FUNCTIONS:
+        return S5_FUNCTIONS[name].result or ANYTHING
     if name in STRING_RESULTS:
         return StringType(254)
     if name in SAME_AS_INPUT and values:

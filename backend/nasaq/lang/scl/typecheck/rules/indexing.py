@@ -8,6 +8,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nasaq.lang.scl import ast
+from nasaq.lang.scl.bind import UNKNOWN
 from nasaq.lang.scl.typecheck.operands import indexed_type
 from nasaq.lang.scl.typecheck.types import ERROR, Type, assignable, describe, is_silent
 from nasaq.lang.types import ArrayType, Elementary
@@ -55,7 +56,9 @@ def _element(ctx: Context, base: Type, name: str, indices: list[ast.Expr], where
 
 def indexed_address(ctx: Context, node: ast.IndexedAddress) -> Type:
     variable = ctx.variable(node.area)
-    if variable is not None:  # `m[2]` for an array called m: the lexer read an address
+    # `m[2]` for an array called m: the lexer read an address. `I[i, k]` next to a variable
+    # `i : INT` is the input area (names are case-insensitive): only an array is indexed.
+    if variable is not None and (isinstance(variable.type, ArrayType) or variable.type == UNKNOWN):
         return _element(ctx, ctx.declared(variable.type), node.area, node.indices, node.loc)
     good = _indices(ctx, node.indices)
     value, count = indexed_type(node.area)

@@ -1,5 +1,7 @@
 """Rule: every name must be declared (``SCL201``): a variable, parameter or constant of the
-block, the FC's own name (its return value), a block, or a symbol of the symbol table."""
+block, the FC's own name (its return value), a block, or a symbol of the symbol table. ``OK``
+and ``ENO`` are predefined BOOL variables of every code block (seeds-003b §2.11): the OK flag,
+and the block's own ENO."""
 
 from __future__ import annotations
 
@@ -9,9 +11,12 @@ from nasaq.ir import BlockKind
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.typecheck.operands import block_value, function_value, symbol_type
 from nasaq.lang.scl.typecheck.types import ERROR, Type
+from nasaq.lang.types import Elementary
 
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
+
+PREDEFINED = {"OK": Elementary("BOOL"), "ENO": Elementary("BOOL")}
 
 
 def name(ctx: Context, node: ast.Name) -> Type:
@@ -52,6 +57,8 @@ def _local(ctx: Context, text: str) -> Type | None:
     block = ctx.block
     if block.kind is BlockKind.FC and text.casefold() == block.name.casefold():
         return function_value(block)
+    if text.upper() in PREDEFINED and block.kind in (BlockKind.OB, BlockKind.FB, BlockKind.FC):
+        return PREDEFINED[text.upper()]
     return None
 
 

@@ -1,0 +1,124 @@
+"""What a call calls, and with which formal parameters (``signatures``).
+
+The forms of S7-SCL (seeds-003b §2.11): ``FC1(...)``/``"Calc"(...)`` an FC; ``FB1.DB1(...)``
+an FB with its instance DB (created by the compiler if no DATA_BLOCK declares it);
+``"Inst"(...)`` an instance DB; ``inst(...)``/``#inst(...)`` a multi-instance (an FB, or an IEC
+timer/counter SFB, declared in VAR); ``S_ODT(...)`` an S5 timer/counter function.
+
+Problems with the callee itself are reported here: an FB without instance (``SCL230``), a block
+that does not exist (``SCL231``), something that is no block (``SCL232``), a DB that is not an
+instance of the FB (``SCL233``), an FC given a DB (``SCL234``). A block only the symbol table
+knows (an STL block, an SFC) has no known interface: its calls are not checked, like the
+standard functions (``SQRT``, ``CONCAT`` ...).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from nasaq.ir import BlockKind
+from nasaq.lang.scl import ast
+from nasaq.lang.scl.typecheck.instances import INSTANCE_KINDS, block_id, exists
+from nasaq.lang.scl.typecheck.rules.calls import STANDARD
+from nasaq.lang.scl.typecheck.signatures import S5_FUNCTIONS, Signature, of_block, of_instance
+from nasaq.lang.scl.typecheck.types import BlockRef, DbRef, Type, describe, is_silent
+from nasaq.lang.types import BlockType
+
+if TYPE_CHECKING:
+    from nasaq.lang.scl.typecheck.context import Context
+
+
+def resolve(ctx: Context, node: ast.Call) -> Signature | None:
+    """The signature to check the call against; None when there is none (reported or unknown)."""
+    callee = node.callee
+    if isinstance(callee, ast.Member):
+        base = block_id(ctx.index, ctx.block, callee.base)
+        if base is not None:
+            return _with_instance(ctx, base, callee)
+    if isinstance(callee, ast.Name) and ctx.variable(callee.name) is None:
+        upper = callee.name.upper()
+        if upper in STANDARD and ctx.index.named(callee.name) is None:
+            return S5_FUNCTIONS.get(upper)
+    if not isinstance(callee, ast.Local) and ctx.variable(_text(callee)) is None:
+        named = block_id(ctx.index, ctx.block, callee)
+        if named is not None and named[0] is not BlockKind.DB:
+            return _block(ctx, named, callee)
+    return _value(ctx, ctx.type_of(callee), callee)
+
+
+def _text(node: ast.Expr) -> str:
+    return node.name if isinstance(node, ast.Name | ast.Local | ast.Symbol) else ""
+
+
+def _block(ctx: Context, named: tuple[BlockKind, int], callee: ast.Expr) -> Signature | None:
+    """A block called by name, without instance: only an FC may be."""
+    kind, number = named
+    block = ctx.index.get(kind, number)
+    label = f"{kind.value} {number}"
+    if kind in INSTANCE_KINDS:
+        ctx.report("SCL230", callee.loc, block=block.label if block else label)
+        return None
+    if kind is BlockKind.FC:
+        if block is not None:
+            return of_block(block)
+        _known(ctx, kind, number, callee)
+        return None
+    if kind is not BlockKind.SFC:
+        ctx.report("SCL232", callee.loc, name=ctx.text(callee), what=label)
+    return None
+
+
+def _known(ctx: Context, kind: BlockKind, number: int, where: ast.Expr) -> bool:
+    """A block the sources do not declare exists only if the symbol table names it."""
+    if isinstance(where, ast.Address) and ctx.index.symbols.block_symbol(kind, number) is None:
+        ctx.report("SCL231", where.loc, block=f"{kind.value} {number}")
+        return False
+    return True
+
+
+def _with_instance(
+    ctx: Context, named: tuple[BlockKind, int], callee: ast.Member
+) -> Signature | None:
+    """``FB1.DB1(...)``: the FB's parameters, once the DB is known to be its instance."""
+    kind, number = named
+    label = f"{kind.value} {number}"
+    if kind is BlockKind.FC:
+        ctx.report("SCL234", callee.loc, block=label)
+        return None
+    if kind not in INSTANCE_KINDS:
+        ctx.report("SCL232", callee.loc, name=ctx.text(callee), what=label)
+        return None
+    db = ctx.type_of(callee.name)
+    if is_silent(db):
+        return None
+    if not isinstance(db, DbRef) or db.number is None:
+        ctx.report("SCL233", callee.name.loc, db=ctx.text(callee.name), block=label)
+        return None
+    instance = BlockType(kind.value, number)
+    made_of = ctx.index.db_type_of(db.number)
+    if made_of is not None and made_of != instance:
+        ctx.report("SCL233", callee.name.loc, db=ctx.text(callee.name), block=label)
+        return None
+    if not exists(ctx.index, kind, number):
+        if kind is BlockKind.FB:  # an SFB without a known interface is not checked
+            _known(ctx, kind, number, callee.base)
+        return None
+    return of_instance(ctx.index, instance)
+
+
+def _value(ctx: Context, value: Type, callee: ast.Expr) -> Signature | None:
+    """A callee known by its value: an instance (multi-instance, instance DB) or an FC."""
+    if is_silent(value):
+        return None
+    if isinstance(value, BlockType) and value.kind in ("FB", "SFB"):
+        return of_instance(ctx.index, value)
+    if isinstance(value, DbRef):
+        made_of = None if value.number is None else ctx.index.db_type_of(value.number)
+        if isinstance(made_of, BlockType) and made_of.kind in ("FB", "SFB"):
+            return of_instance(ctx.index, made_of)
+        if made_of is None:
+            return None  # a DB the sources do not declare
+    if isinstance(value, BlockRef):
+        return _block(ctx, (value.kind, value.number), callee)
+    ctx.report("SCL232", callee.loc, name=ctx.text(callee), what=describe(value))
+    return None
