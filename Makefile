@@ -16,7 +16,7 @@ FRONTEND_SOURCES := $(shell find frontend/src frontend/public -type f 2>/dev/nul
 help:
 	@echo "make run    install what is missing, then serve the IDE at http://127.0.0.1:8000"
 	@echo "make test   install what is missing (incl. Chromium), then run every test suite"
-	@echo "make bench        STL instructions per second of the CPU simulator"
+	@echo "make bench        STL instructions/s of the CPU; SCL compile lines/s and statements/s"
 	@echo "make conformance  awlsim's self-checking STL programs (downloads awlsim from PyPI)"
 	@echo "make install | make lock (re-pin Python dependencies) | make clean"
 
@@ -46,6 +46,7 @@ test: install chromium
 
 bench: install
 	$(BIN)/python -m nasaq.cpu.bench
+	$(BIN)/python -m nasaq.lang.scl.compile_bench
 
 conformance: install
 	$(BIN)/python tests/conformance/awlsim_suite.py

@@ -1,4 +1,5 @@
-"""The ``nasaq`` command: ``serve`` the IDE, ``run`` STL sources headless, ``test`` scenarios,
+"""The ``nasaq`` command: ``serve`` the IDE, ``run`` STL/SCL sources headless, ``compile`` them
+(``--emit stl`` shows what SCL becomes), ``test`` scenarios,
 ``migrate`` the database, print the ``openapi`` schema."""
 
 from __future__ import annotations
@@ -65,6 +66,14 @@ def _run(_settings: Settings, args: argparse.Namespace) -> int:
     return run_main(options)
 
 
+def _compile(_settings: Settings, args: argparse.Namespace) -> int:
+    from pathlib import Path
+
+    from nasaq.headless.emit import main as compile_main
+
+    return compile_main([Path(source) for source in args.sources], args.emit)
+
+
 def _test(_settings: Settings, args: argparse.Namespace) -> int:
     from nasaq.scenarios.report import main as test_main
 
@@ -82,9 +91,11 @@ def build_parser() -> argparse.ArgumentParser:
     serve.set_defaults(handler=_serve)
 
     run = commands.add_parser(
-        "run", help="run STL sources for N scans and print the final CPU state as JSON"
+        "run", help="run STL/SCL sources for N scans and print the final CPU state as JSON"
     )
-    run.add_argument("sources", nargs="+", metavar="SOURCE", help=".awl sources, symbol tables")
+    run.add_argument(
+        "sources", nargs="+", metavar="SOURCE", help=".awl/.scl sources, symbol tables"
+    )
     run.add_argument("--cycles", type=int, default=1, help="scans of OB1 to run (after OB100)")
     run.add_argument("--cycle-ms", type=float, default=10.0, help="virtual time per scan")
     run.add_argument(
@@ -120,6 +131,18 @@ def build_parser() -> argparse.ArgumentParser:
         help="marker byte used as clock memory (e.g. 100 or MB100): bit 0 = 0.1 s ... bit 7 = 2 s",
     )
     run.set_defaults(handler=_run)
+
+    compile_ = commands.add_parser(
+        "compile", help="compile STL/SCL sources: print problems (and, with --emit stl, the STL)"
+    )
+    compile_.add_argument("sources", nargs="+", metavar="SOURCE", help=".awl/.scl sources")
+    compile_.add_argument(
+        "--emit",
+        choices=["stl", "none"],
+        default="none",
+        help="stl: print the STL the SCL blocks are compiled to, with their SCL lines",
+    )
+    compile_.set_defaults(handler=_compile)
 
     test = commands.add_parser("test", help="run scenario files (PLC unit tests)")
     test.add_argument("scenarios", nargs="+", metavar="SCENARIO", help="YAML files or folders")

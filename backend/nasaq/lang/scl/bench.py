@@ -57,7 +57,7 @@ _FB_BODY = """  // section {n}
   CASE count OF
     0: value := 0.0;
     1, 2, 3: value := INT_TO_REAL(count) ** 2;
-    4..9: pos.x := pos.y + MW{word} - DB10.DW[i];
+    4..9: pos.x := pos.y + WORD_TO_INT(MW{word}) - WORD_TO_INT(DB10.DW[i]);
   ELSE
     pos.y := -pos.x;
   END_CASE;
@@ -66,7 +66,7 @@ _FB_BODY = """  // section {n}
   WHILE k < 10 AND NOT done DO
     k := k + 1;
   END_WHILE;
-  tmp := DINT#{n} + WORD_TO_DINT(W#16#{n:X}) * (tmp - 1);
+  tmp := DINT#{n} + DWORD_TO_DINT(WORD_TO_DWORD(W#16#{n:X})) * (tmp - 1);
 """
 _FC_HEAD = """FUNCTION FC{block} : INT
 VAR_INPUT
@@ -89,9 +89,32 @@ _FC_BODY = """  r := a * b + (a - b) / 2;
   END_REPEAT;
   "Data".level := "Data".level + r - a * 3;
   FC{other}(a := r, b := {n}, ratio := ratio * 1.5);
-  MW{word} := WORD_TO_INT(DB1.DBW{word}) + #a;
+  MW{word} := INT_TO_WORD(WORD_TO_INT(DB1.DBW{word}) + #a);
 """
 _FB_END = "END_FUNCTION_BLOCK\n\n"
+# The data blocks the code addresses, so that the source also compiles (check and lowering).
+_DATA = """DATA_BLOCK DB1
+STRUCT
+  words : ARRAY[0..499] OF WORD;
+END_STRUCT
+BEGIN
+END_DATA_BLOCK
+
+DATA_BLOCK DB10
+STRUCT
+  words : ARRAY[0..15] OF WORD;
+END_STRUCT
+BEGIN
+END_DATA_BLOCK
+
+DATA_BLOCK "Data"
+STRUCT
+  level : INT;
+END_STRUCT
+BEGIN
+END_DATA_BLOCK
+
+"""
 _FC_END = "  FC{block} := r;\nEND_FUNCTION\n\n"
 SECTIONS_PER_BLOCK = 20
 
@@ -109,12 +132,13 @@ def program(lines: int = 20_000) -> str:
             n = block * SECTIONS_PER_BLOCK + section
             byte, bit = divmod(n % 1000, 8)
             body = _FC_BODY if function else _FB_BODY
-            text.append(body.format(n=n, byte=byte, bit=bit, word=2 * (n % 500), other=block + 3))
+            other = 3 if block != 3 else 6  # an FC that exists (FC3 is always there)
+            text.append(body.format(n=n, byte=byte, bit=bit, word=2 * (n % 500), other=other))
         text.append((_FC_END if function else _FB_END).format(block=block))
         chunk = "".join(text)
         parts.append(chunk)
         count += chunk.count("\n")
-    return "".join(parts)
+    return _DATA + "".join(parts)
 
 
 _DENSE_LINE = "  IF a > i THEN x := x + i * 2; ELSE y := MW[i] + DB10.DW[i]; END_IF;\n"

@@ -96,6 +96,7 @@ class SclBlock:
     return_type: DataType | None = None
     db_type: DataType | None = None  # DB: StructType, or BlockType of its FB/UDT
     labels: set[str] = field(default_factory=set)  # casefolded
+    external: bool = False  # compiled by another front end (see ``SclIndex.add_external``)
 
     @property
     def label(self) -> str:
@@ -114,6 +115,9 @@ class SclIndex:
         self.by_name: dict[str, SclBlock] = {}
         self.layout = Layout(self._expand)
         self.diagnostics: list[Diagnostic] = []
+        # Instance DBs no DATA_BLOCK declares (``FB1.DB5(...)``, a symbol ``DB 5`` of type
+        # ``FB 1``): DB number → its FB. Filled by the checker (``typecheck.instances``).
+        self.implicit_dbs: dict[int, BlockType] = {}
         self._instances: dict[tuple[BlockKind, int], tuple[list[Slot], int]] = {}
         self._dbs: dict[int, tuple[list[Slot], int]] = {}
         self._temps: dict[tuple[BlockKind, int], tuple[list[Slot], int]] = {}
@@ -139,8 +143,28 @@ class SclIndex:
     def symbol(self, name: str) -> Symbol | None:
         return self.symbols.get(name)
 
+    def db_type_of(self, number: int) -> DataType | None:
+        """What DB ``number`` is made of: its declaration, or the FB of an implicit instance DB."""
+        found = self.blocks.get((BlockKind.DB, number))
+        if found is not None:
+            return found.db_type
+        return self.implicit_dbs.get(number)
+
     def __iter__(self) -> Iterator[SclBlock]:
         return iter(sorted(self.blocks.values(), key=lambda b: (b.kind.value, b.number)))
+
+    # ---- blocks of other languages ----------------------------------------------------------
+
+    def add_external(self, kind: BlockKind, number: int, name: str, file: str) -> SclBlock:
+        """A block compiled by another front end (STL): its number is taken, its name known;
+        its interface comes later (``SclBlock.sections``, ``return_type``), before checking."""
+        keyword = {v: k for k, v in KIND_OF_KEYWORD.items() if k != "PROGRAM"}[kind]
+        node = ast.Block(keyword, ast.BlockName(name or f"{kind.value}{number}", absolute=not name))
+        info = SclBlock(kind, number, name or f"{kind.value}{number}", file, node, external=True)
+        self.blocks[(kind, number)] = info
+        if name:
+            self.by_name[name.casefold()] = info
+        return info
 
     # ---- numbering --------------------------------------------------------------------------
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import gc
 from collections.abc import Iterable
 from dataclasses import dataclass, field
+from typing import Any
 
 from nasaq.diagnostics import Diagnostic, Severity
 from nasaq.ir import Block, BlockKind, Program, Variable
@@ -29,6 +30,7 @@ from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES, SymbolTable, read_symb
 from nasaq.lang.types import BlockType, StructType, type_text
 
 STL_SUFFIXES = (".awl", ".stl")
+SCL_SUFFIXES = (".scl",)
 # A whole-project export of a large plant is a few MB; anything bigger is not an STL source anyone
 # wrote, and the parser (about 7 µs per token) would make the user wait for nothing.
 MAX_SOURCE_CHARS = 4 * 1024 * 1024
@@ -46,6 +48,8 @@ class SourceFile:
 class CompileResult:
     program: Program
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    # The STL that SCL blocks became (file, block), for ``nasaq compile --emit stl``.
+    generated: list[tuple[str, ast.BlockNode]] = field(default_factory=list)
 
     @property
     def ok(self) -> bool:
@@ -116,6 +120,9 @@ class _Compiler:
         self.program = Program()
         self.auto: dict[int, AutoInstance] = {}
         self.lowered: dict[tuple[BlockKind, int], LoweredCode] = {}
+        self.scl_sources: list[Any] = []  # nasaq.lang.scl.ast.SourceFile
+        self.scl_lines: dict[str, list[str]] = {}
+        self.generated: list[tuple[str, ast.BlockNode]] = []
 
     def read(self, sources: list[SourceFile]) -> None:
         for source in sources:
@@ -126,6 +133,9 @@ class _Compiler:
         for source in sources:
             suffix = _suffix(source.name)
             if suffix in SYMBOL_TABLE_SUFFIXES:
+                continue
+            if suffix in SCL_SUFFIXES:
+                self.read_scl(source)
                 continue
             if suffix not in STL_SUFFIXES:
                 self.diagnostics.append(
@@ -155,6 +165,22 @@ class _Compiler:
             symbol.name: symbol.address for symbol in self.symbols.symbols.values()
         }
 
+    def read_scl(self, source: SourceFile) -> None:
+        text = decode(source.text)
+        where = ast.Loc(1, 1, 1, 1)
+        if len(text) > MAX_SOURCE_CHARS:
+            size = {"size_kb": len(text) // 1024, "limit_kb": MAX_SOURCE_CHARS // 1024}
+            self.diagnostics.append(problem("STL111", source.name, where, file=source.name, **size))
+            return
+        from nasaq.lang.scl.parse import parse_source as parse_scl  # SCL builds on this package
+
+        parsed = parse_scl(source.name, text)
+        self.diagnostics += parsed.diagnostics
+        if not parsed.source.blocks and not parsed.diagnostics:
+            self.diagnostics.append(problem("STL112", source.name, where, file=source.name))
+        self.scl_sources.append(parsed.source)
+        self.scl_lines[source.name] = text.split("\n")
+
     def register(self) -> list[tuple[BlockInfo, _File]]:
         registered: list[tuple[BlockInfo, _File]] = []
         for file in self.files:
@@ -175,8 +201,33 @@ class _Compiler:
                 info = self.index.register(node, file.name, file.language)
                 if info is not None:
                     registered.append((info, file))
+        from nasaq.lang.scl.project import SclUnit  # SCL builds on this package
+
+        unit = SclUnit(self.scl_sources, self.symbols) if self.scl_sources else None
+        if unit is not None:
+            self.diagnostics += unit.bind(self.index.blocks)
         for info, _ in registered:
             self.index.declare(info)
+        if unit is not None:
+            unit.attach()
+            blocks, problems = unit.lower()
+            self.diagnostics += problems
+            files: dict[str, _File] = {}
+            self.generated = blocks
+            generated: list[tuple[BlockInfo, _File]] = []
+            for name, node in blocks:
+                if name not in files:
+                    empty = ParseResult(ast.SourceNode(name, [], []))
+                    files[name] = _File(name, empty, self.scl_lines.get(name, []))
+                info = self.index.register(node, name, "en")
+                if info is not None:
+                    generated.append((info, files[name]))
+            for info, _ in generated:  # after all are registered: a DB may name a later UDT
+                self.index.declare(info)
+            registered += generated
+            self.program.symbols = {
+                symbol.name: symbol.address for symbol in self.symbols.symbols.values()
+            }
         return registered
 
     def build(self, registered: list[tuple[BlockInfo, _File]]) -> None:
@@ -325,4 +376,4 @@ def _compile(sources: list[SourceFile], mnemonics: str, test_ops: bool) -> Compi
     compiler.build(registered)
     compiler.diagnostics += compiler.index.diagnostics
     diagnostics = sorted(compiler.diagnostics, key=sort_key)
-    return CompileResult(compiler.program, diagnostics)
+    return CompileResult(compiler.program, diagnostics, compiler.generated)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.bench import dense, program
 from nasaq.lang.scl.parse import parse_source
+from nasaq.lang.stl import SourceFile, compile_sources
 
 
 def test_the_mixed_bench_source_parses_without_diagnostics() -> None:
@@ -13,7 +14,7 @@ def test_the_mixed_bench_source_parses_without_diagnostics() -> None:
     assert result.diagnostics == []
     assert text.count("\n") >= 1500
     kinds = {block.kind for block in result.source.blocks}
-    assert kinds == {"FUNCTION_BLOCK", "FUNCTION"}
+    assert kinds == {"DATA_BLOCK", "FUNCTION_BLOCK", "FUNCTION"}  # the DBs the code addresses
 
 
 def test_the_dense_bench_source_parses_without_diagnostics() -> None:
@@ -22,3 +23,10 @@ def test_the_dense_bench_source_parses_without_diagnostics() -> None:
     (block,) = result.source.blocks
     assert len(block.code) == 5
     assert all(isinstance(stmt, ast.If) for stmt in block.code)
+
+
+def test_the_benchmark_source_compiles_without_problems() -> None:
+    """``make bench`` compiles it whole (check and lowering too): it must stay valid SCL."""
+    result = compile_sources([SourceFile("bench.scl", program(600))])
+    assert [str(item) for item in result.diagnostics] == []
+    assert result.generated
