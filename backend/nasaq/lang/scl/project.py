@@ -19,6 +19,7 @@ from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import SclBlock, SclIndex
 from nasaq.lang.scl.lower import lower_index
 from nasaq.lang.scl.typecheck import check_index
+from nasaq.lang.scl.typecheck.context import Context
 from nasaq.lang.stl import ast as stl
 from nasaq.lang.stl.addresses import parse_address
 from nasaq.lang.stl.bind import BlockInfo
@@ -57,10 +58,11 @@ class SclUnit:
             external.db_type = info.db_type
 
     def lower(self) -> tuple[list[tuple[str, stl.BlockNode]], list[Diagnostic]]:
-        diagnostics = check_index(self.index)
+        contexts: dict[tuple[BlockKind, int], Context] = {}
+        diagnostics = check_index(self.index, contexts)
         if any(item.severity is Severity.ERROR for item in diagnostics + self.index.diagnostics):
             return [], diagnostics
-        blocks, problems = lower_index(self.index)
+        blocks, problems = lower_index(self.index, contexts)
         return blocks + self.implicit_instances(), diagnostics + problems
 
     def implicit_instances(self) -> list[tuple[str, stl.BlockNode]]:

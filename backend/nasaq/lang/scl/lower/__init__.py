@@ -11,19 +11,25 @@ for a type), ``places`` (variables as operands), ``expressions`` (values and con
 from __future__ import annotations
 
 from nasaq.diagnostics import Diagnostic
+from nasaq.ir import BlockKind
 from nasaq.lang.scl.bind import SclIndex
 from nasaq.lang.scl.lower.blocks import lower_block
+from nasaq.lang.scl.typecheck.context import Context
 from nasaq.lang.stl import ast as stl
 
 
-def lower_index(index: SclIndex) -> tuple[list[tuple[str, stl.BlockNode]], list[Diagnostic]]:
-    """(file, STL block) for every block of ``index`` that could be lowered, and the problems."""
+def lower_index(
+    index: SclIndex, contexts: dict[tuple[BlockKind, int], Context] | None = None
+) -> tuple[list[tuple[str, stl.BlockNode]], list[Diagnostic]]:
+    """(file, STL block) for every block of ``index`` that could be lowered, and the problems.
+    ``contexts`` are the checker's, by block: expression types are then not computed again."""
+    found_contexts = contexts or {}
     blocks: list[tuple[str, stl.BlockNode]] = []
     diagnostics: list[Diagnostic] = []
     for block in index:
         if block.external:
             continue
-        lowered, found = lower_block(index, block)
+        lowered, found = lower_block(index, block, found_contexts.get((block.kind, block.number)))
         diagnostics += found
         if lowered is not None:
             blocks.append((block.file, lowered))

@@ -19,6 +19,8 @@ from nasaq.lang.scl.lower.emitter import Emitter
 from nasaq.lang.scl.lower.literals import evaluate, stl_constant
 from nasaq.lang.scl.lower.places import LoweringError
 from nasaq.lang.scl.lower.statements import Statements
+from nasaq.lang.scl.typecheck.context import Context
+from nasaq.lang.scl.typecheck.walk import expressions, nested, statements
 from nasaq.lang.stl import ast as stl
 from nasaq.lang.stl.diag import problem
 from nasaq.lang.types import ArrayType, BlockType, DataType, Elementary, StringType, StructType
@@ -39,7 +41,9 @@ SECTION_KEYWORD = {
 }
 
 
-def lower_block(index: SclIndex, block: SclBlock) -> tuple[stl.BlockNode | None, list[Diagnostic]]:
+def lower_block(
+    index: SclIndex, block: SclBlock, ctx: Context | None = None
+) -> tuple[stl.BlockNode | None, list[Diagnostic]]:
     """The STL form of ``block``; None (with an SCL301 diagnostic) when part of its code is
     beyond the code generator."""
     node = block.node
@@ -68,7 +72,7 @@ def lower_block(index: SclIndex, block: SclBlock) -> tuple[stl.BlockNode | None,
     ]
     taken = set(block.variables) | set(block.constants)
     emitter = Emitter(taken)
-    lowerer = Statements(index, block, emitter)
+    lowerer = Statements(index, block, emitter, ctx)
     try:
         _code(lowerer, block)
     except LoweringError as error:
@@ -122,19 +126,12 @@ def _code(lowerer: Statements, block: SclBlock) -> None:
 
 def _uses_ok(body: list[ast.Stmt]) -> bool:
     """Whether the code names OK or ENO (as a plain name: a variable may be called so)."""
-    stack: list[object] = list(body)
-    while stack:
-        item = stack.pop()
-        if isinstance(item, ast.Name) and item.name.upper() in ("OK", "ENO"):
-            return True
-        if isinstance(item, ast.Arg):
-            stack.append(item.value)  # ENO => x names the callee's ENO, not this block's
-            continue
-        if isinstance(item, list):
-            stack.extend(item)
-        elif hasattr(item, "__dataclass_fields__"):
-            stack.extend(getattr(item, name) for name in item.__dataclass_fields__ if name != "loc")
-    return False
+    return any(
+        isinstance(node, ast.Name) and node.name.upper() in ("OK", "ENO")
+        for stmt in statements(body)
+        for expression in expressions(stmt)
+        for node in nested(expression)
+    )
 
 
 def _header(node: ast.Block) -> list[stl.HeadItem]:

@@ -24,8 +24,9 @@ from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import SclBlock, SclIndex
 from nasaq.lang.scl.lower.emitter import Emitter, Temp
 from nasaq.lang.scl.lower.literals import Value, evaluate
-from nasaq.lang.scl.typecheck.context import Context, ExpressionRule
+from nasaq.lang.scl.typecheck.context import Context
 from nasaq.lang.scl.typecheck.operands import indexed_type
+from nasaq.lang.scl.typecheck.rules import EXPRESSIONS
 from nasaq.lang.scl.typecheck.types import ANYTHING, BlockRef, DbRef, Type, scalar, wider
 from nasaq.lang.stl import ast as stl
 from nasaq.lang.stl.diag import problem
@@ -72,11 +73,13 @@ class Access:
 class Base:
     """State shared by the parts of the code generator for one block."""
 
-    def __init__(self, index: SclIndex, block: SclBlock, em: Emitter) -> None:
+    def __init__(
+        self, index: SclIndex, block: SclBlock, em: Emitter, ctx: Context | None = None
+    ) -> None:
         self.index = index
         self.block = block
         self.em = em
-        self.ctx = Context(index, block, _expressions())
+        self.ctx = ctx if ctx is not None else Context(index, block, EXPRESSIONS)
         self.diagnostics: list[Diagnostic] = []
         self.hoisted: dict[int, Temp] = {}  # id(call) -> the temporary that holds its value
         self.loops: list[tuple[str, str]] = []  # (continue label, exit label), innermost last
@@ -205,9 +208,9 @@ class Base:
         return Access("address", name=upper)
 
     def db_member(self, node: ast.Member, db: DbRef) -> Access:
-        base = self.access(node.base) if db.number is None else Access("db", db=db.number)
-        if db.number is None:
-            base = Access("db", db_expr=_db_call(node.base))
+        # WORD_TO_BLOCK_DB(x).DW[i]: the DB is only known (and opened) at run time
+        runtime = db.number is None
+        base = Access("db", db_expr=node.base) if runtime else Access("db", db=db.number)
         member = node.name
         if isinstance(member, ast.Address):
             part = member.text.upper().replace(" ", "")
@@ -514,16 +517,6 @@ def _p0(loc: ast.Loc) -> stl.LiteralNode:
 
 def _dint(number: int) -> tuple[str, str]:
     return "TYPED", f"L#{number}"
-
-
-def _db_call(node: ast.Expr) -> ast.Expr:
-    return node
-
-
-def _expressions() -> dict[type, ExpressionRule]:
-    from nasaq.lang.scl.typecheck.rules import EXPRESSIONS
-
-    return EXPRESSIONS
 
 
 __all__ = ["Access", "Base", "BlockRef", "LoweringError"]

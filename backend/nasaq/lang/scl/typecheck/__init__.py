@@ -26,21 +26,34 @@ CODE_BLOCKS = (BlockKind.OB, BlockKind.FB, BlockKind.FC)
 
 def check_block(index: SclIndex, block: SclBlock) -> list[Diagnostic]:
     """The problems of one block: its code (OB, FB, FC), its declarations, a DB's values."""
+    return checked_block(index, block).diagnostics
+
+
+def checked_block(index: SclIndex, block: SclBlock) -> Context:
+    """The context a block was checked in: its ``diagnostics``, and the types of its
+    expressions, which the code generator reads instead of typing everything again."""
     ctx = Context(index, block, EXPRESSIONS)
     if block.kind in CODE_BLOCKS:
         _statements(ctx, block.node.code)
     for rule in BLOCKS:
         rule(ctx)
-    return ctx.diagnostics
+    return ctx
 
 
-def check_index(index: SclIndex) -> list[Diagnostic]:
-    """The problems of every block of the index, in block order."""
+def check_index(
+    index: SclIndex, contexts: dict[tuple[BlockKind, int], Context] | None = None
+) -> list[Diagnostic]:
+    """The problems of every block of the index, in block order; ``contexts`` (if given)
+    receives each block's checking context."""
     note_implicit_instances(index)
     found: list[Diagnostic] = []
     for block in index:
-        if not getattr(block, "external", False):  # an STL block in the index: STL checks it
-            found.extend(check_block(index, block))
+        if block.external:  # an STL block in the index: the STL compiler checks it
+            continue
+        ctx = checked_block(index, block)
+        found.extend(ctx.diagnostics)
+        if contexts is not None:
+            contexts[(block.kind, block.number)] = ctx
     return found
 
 
@@ -54,4 +67,4 @@ def _statements(ctx: Context, body: list[ast.Stmt]) -> None:
             _statements(ctx, nested)
 
 
-__all__ = ["check_block", "check_index"]
+__all__ = ["check_block", "check_index", "checked_block"]
