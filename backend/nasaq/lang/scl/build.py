@@ -7,12 +7,17 @@ methods of its sub-rules returned. Positions come from tokens and child nodes.
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 from lark import Token
 
 from nasaq.lang.scl import ast
 from nasaq.lang.stl.build import loc as token_loc
+
+# ``m1``, ``i2``, ``qx3``: what the ADDR terminal takes but no S7 address is (an input, output or
+# memory bit needs its bit number), so it is an identifier: a variable called m1.
+_NOT_AN_ADDRESS = re.compile(r"(?i)(?:I|Q|M|IX|QX|MX)\d+$")
 
 _STMT_TYPES = (
     ast.Assign,
@@ -442,8 +447,11 @@ class AstBuilder:
     def symbol(self, children: list[Any]) -> ast.Symbol:
         return ast.Symbol(str(children[0])[1:-1], loc=token_loc(children[0]))
 
-    def address(self, children: list[Any]) -> ast.Address:
-        return ast.Address(_compact(children[0]), loc=token_loc(children[0]))
+    def address(self, children: list[Any]) -> ast.Address | ast.Name:
+        token = children[0]
+        if _NOT_AN_ADDRESS.match(token):  # ``m1 : INT``: an I/Q/M bit needs ``.bit``
+            return ast.Name(str(token), loc=token_loc(token))
+        return ast.Address(_compact(token), loc=token_loc(token))
 
     def indexed_address(self, children: list[Any]) -> ast.IndexedAddress:
         area: Token = children[0]

@@ -152,8 +152,10 @@ class Base:
         if isinstance(node, ast.Address):
             return self.absolute(node.text.lstrip("%").replace(" ", ""), node)
         if isinstance(node, ast.IndexedAddress):
-            array = self.ctx.variable(node.area)  # an array called m, i, q ... read as an area
-            if array is not None:
+            # an array called m, i, q ... read as an area; ``I[i, k]`` next to ``i : INT`` is
+            # the input area (the checker's rule: only an array is indexed)
+            array = self.ctx.variable(node.area)
+            if array is not None and isinstance(array.type, ArrayType):
                 return Access("local", array.name, path=[node.indices])
             return Access("indexed", area=node.area.upper().lstrip("%"), indices=node.indices)
         if isinstance(node, ast.Member):
@@ -333,9 +335,11 @@ class Base:
         if access.db is not None:
             self.em.op("OPN", stl.AddressNode(f"DB {access.db}", loc))
             return
-        assert access.db_expr is not None
+        number = _block_db_number(access.db_expr)
+        if number is None:
+            raise LoweringError(loc, "a data block chosen at run time (not WORD_TO_BLOCK_DB)")
         temp = self.em.temp(Elementary("WORD"))
-        self.load_value(access.db_expr, "WORD")
+        self.load_value(number, "WORD")
         self.em.op("T", self.em.ref(temp))
         self.em.op("OPN", stl.IndirectNode("DB", self.em.ref(temp), None, loc))
         self.em.release(temp)
@@ -509,6 +513,18 @@ class Base:
 
     def load_value(self, node: ast.Expr, want: str) -> None:  # pragma: no cover - overridden
         raise NotImplementedError
+
+
+def _block_db_number(node: ast.Expr | None) -> ast.Expr | None:
+    """The DB number inside ``WORD_TO_BLOCK_DB(number)``."""
+    while isinstance(node, ast.Paren):
+        node = node.inner
+    if not isinstance(node, ast.Call) or len(node.args) != 1:
+        return None
+    callee = node.callee
+    if not isinstance(callee, ast.Name) or callee.name.upper() != "WORD_TO_BLOCK_DB":
+        return None
+    return node.args[0].value
 
 
 def _p0(loc: ast.Loc) -> stl.LiteralNode:

@@ -329,8 +329,15 @@ def _all_indices(dims: tuple[tuple[int, int], ...]) -> list[tuple[int, ...]]:
 
 
 def _extend(access: Access, path: list[str | list[int]]) -> Access:
+    """``access`` followed by ``path``; a row of a matrix (``m[2]``) followed by an element
+    index (``[1]``) is one index list (``m[2, 1]``): S7 has no arrays of arrays."""
     extended = copy(access)
-    extended.path = [*access.path, *[_literal_indices(part) for part in path]]
+    parts = [_literal_indices(part) for part in path]
+    base = list(access.path)
+    if base and parts and isinstance(base[-1], list) and isinstance(parts[0], list):
+        base[-1] = [*base[-1], *parts[0]]
+        parts = parts[1:]
+    extended.path = [*base, *parts]
     return extended
 
 
