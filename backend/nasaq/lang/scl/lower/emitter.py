@@ -37,6 +37,7 @@ class Emitter:
     free: dict[str, list[Temp]] = field(default_factory=dict)
     loc: Loc = _START  # the SCL node being lowered: every instruction gets it
     _labels: int = 0
+    _aliases: dict[str, str] = field(default_factory=dict)  # a label placed on another's spot
     _names: int = 0
 
     # ---- instructions -----------------------------------------------------------------------
@@ -76,13 +77,21 @@ class Emitter:
 
     def place(self, label: str) -> None:
         if self.code and isinstance(self.code[-1], stl.LabelNode):
-            self.op("NOP", self.literal("NUMBER", "0"))  # one label per instruction
+            # one label per instruction: the second names the first (no NOP in a hot loop)
+            self._aliases[label] = self.code[-1].name
+            return
         self.code.append(stl.LabelNode(label, self.loc))
 
     def finish(self) -> list[stl.CodeItem]:
         """The code, with a ``NOP 0`` after a label that ends it (a label needs an instruction)."""
         if self.code and isinstance(self.code[-1], stl.LabelNode):
             self.op("NOP", self.literal("NUMBER", "0"))
+        if self._aliases:
+            for item in self.code:
+                if isinstance(item, stl.InstrNode) and item.operands:
+                    target = item.operands[0]
+                    if isinstance(target, stl.AddressNode) and target.text in self._aliases:
+                        item.operands[0] = stl.AddressNode(self._aliases[target.text], target.loc)
         return self.code
 
     # ---- hidden temporaries -----------------------------------------------------------------

@@ -1,8 +1,9 @@
 """Statements, as S7-SCL compiles them: IF/ELSIF/ELSE and CASE to conditional jumps, FOR as a
-test-at-top loop (the end value is evaluated once, the step is a constant or evaluated once and
-its sign decides the test), WHILE and REPEAT, EXIT/CONTINUE to the loop's labels, RETURN to the
-block's epilogue, GOTO to the label of the LABEL section. Assignments store with ``T`` or ``=``;
-a STRUCT, UDT or ARRAY assignment copies element by element.
+loop tested before the first pass and after each step (the end value is evaluated once, the
+step is a constant or evaluated once and its sign decides the test), WHILE and REPEAT,
+EXIT/CONTINUE to the loop's labels, RETURN to the block's epilogue, GOTO to the label of the
+LABEL section. Assignments store with ``T`` or ``=``; a STRUCT, UDT or ARRAY assignment copies
+element by element.
 """
 
 from __future__ import annotations
@@ -280,6 +281,29 @@ class Statements(Functions):
         else:
             test("<=" if upward else ">=")
         em.jump("JCN", leave)
+        if step_temp is None and self.plain(self.access(counter)):
+            # the test after the step: ``T`` leaves the counter in ACCU1, so the next pass
+            # costs L, +, T, L, compare, JC (the first test above is the same test)
+            body = em.new_label()
+            em.place(body)
+            self.loop(stmt.body, step_label, leave)
+            em.loc = stmt.loc
+            em.place(step_label)
+            self.load_value(counter, kind)
+            em.load_text(*stl_constant(step if step is not None else _ONE, kind))
+            em.op("+" + suffix)
+            em.op("T", self.operand(self.access(counter), counter.loc))
+            if end_temp is not None:
+                em.op("L", em.ref(end_temp))
+            else:
+                assert end is not None
+                em.load_text(*stl_constant(end, kind))
+            em.op(("<=" if upward else ">=") + suffix)
+            em.jump("JC", body)
+            em.place(leave)
+            if end_temp is not None:
+                em.release(end_temp)
+            return
         self.loop(stmt.body, step_label, leave)
         em.loc = stmt.loc
         em.place(step_label)
