@@ -20,7 +20,6 @@ from nasaq.lang.scl.lower.literals import evaluate, stl_constant
 from nasaq.lang.scl.lower.places import LoweringError
 from nasaq.lang.scl.lower.statements import Statements
 from nasaq.lang.scl.typecheck.context import Context
-from nasaq.lang.scl.typecheck.walk import expressions, nested, statements
 from nasaq.lang.stl import ast as stl
 from nasaq.lang.stl.diag import problem
 from nasaq.lang.types import ArrayType, BlockType, DataType, Elementary, StringType, StructType
@@ -106,11 +105,12 @@ def _code(lowerer: Statements, block: SclBlock) -> None:
     node = block.node
     em.loc = node.loc
     lowerer.end_label = em.new_label()
-    if _uses_ok(node.code):
-        lowerer.ok = em.temp(Elementary("BOOL"))
-        em.op("SET")
-        em.op("=", em.ref(lowerer.ok))
     lowerer.statements(node.code)
+    if lowerer.ok is not None:  # the code names OK or ENO: OK := TRUE first
+        em.loc = node.loc
+        start = [stl.InstrNode("SET", [], None, node.loc)]
+        start.append(stl.InstrNode("=", [em.ref(lowerer.ok)], None, node.loc))
+        em.code[0:0] = start
     em.loc = node.end
     em.place(lowerer.end_label)
     if lowerer.ok is not None:
@@ -122,16 +122,6 @@ def _code(lowerer: Statements, block: SclBlock) -> None:
         em.op("AN", stl.BareNode("OS", None, em.loc))  # ENO: no arithmetic error (OK)
     em.op("SAVE")
     em.op("BE")
-
-
-def _uses_ok(body: list[ast.Stmt]) -> bool:
-    """Whether the code names OK or ENO (as a plain name: a variable may be called so)."""
-    return any(
-        isinstance(node, ast.Name) and node.name.upper() in ("OK", "ENO")
-        for stmt in statements(body)
-        for expression in expressions(stmt)
-        for node in nested(expression)
-    )
 
 
 def _header(node: ast.Block) -> list[stl.HeadItem]:

@@ -82,6 +82,7 @@ class Base:
         self.ctx = ctx if ctx is not None else Context(index, block, EXPRESSIONS)
         self.diagnostics: list[Diagnostic] = []
         self.hoisted: dict[int, Temp] = {}  # id(call) -> the temporary that holds its value
+        self.constants: dict[int, tuple[ast.Expr, Value | None]] = {}  # id -> (node, value)
         self.loops: list[tuple[str, str]] = []  # (continue label, exit label), innermost last
         self.user_labels: dict[str, str] = {}
         self.ok: Temp | None = None  # the OK flag, when the block uses OK or ENO
@@ -129,11 +130,18 @@ class Base:
         return found
 
     def constant(self, node: ast.Expr) -> Value | None:
-        if isinstance(node, ast.Literal | ast.Unary | ast.Paren | ast.Name | ast.Local):
-            return evaluate(node, self.index, self.block)
-        if isinstance(node, ast.Binary) and node.op in _FOLDED:
-            return evaluate(node, self.index, self.block)  # constant folding, as S7-SCL does
-        return None
+        """The value of a constant expression (folded, as S7-SCL does), None for others; asked
+        again and again for the same nodes, so remembered."""
+        known = self.constants.get(id(node))
+        if known is not None:
+            return known[1]
+        found = None
+        if isinstance(node, ast.Literal | ast.Unary | ast.Paren | ast.Name | ast.Local) or (
+            isinstance(node, ast.Binary) and node.op in _FOLDED
+        ):
+            found = evaluate(node, self.index, self.block)
+        self.constants[id(node)] = (node, found)  # the node is kept, so its id stays its own
+        return found
 
     def report(self, code: str, loc: ast.Loc, **params: object) -> None:
         self.diagnostics.append(problem(code, self.block.file, loc, **params))
@@ -271,8 +279,11 @@ class Base:
         return not (access.root == "local" and access.path and self.by_reference(access.name))
 
     def ok_flag(self) -> Temp:
+        """The OK flag's temporary, made at its first use (the block sets it TRUE at its start,
+        see ``blocks``); never one from the pool, whose earlier users would overwrite it."""
         if self.ok is None:
-            raise LoweringError(self.em.loc, "OK")  # pragma: no cover - set up by the block
+            self.ok = Temp(self.em.fresh_name(), Elementary("BOOL"))
+            self.em.temps.append(self.ok)
         return self.ok
 
     def constant_path(self, path: list[Selector]) -> list[str | list[int] | stl.AddressNode] | None:
