@@ -86,9 +86,25 @@ def split_area(prefix: str) -> tuple[Area, Width, str | None] | None:
     return None
 
 
-@lru_cache(maxsize=8192)
 def parse_address(text: str) -> Parsed:
-    """What ``text`` addresses (cached: programs repeat the same addresses a lot)."""
+    """What ``text`` addresses; ``AddressError`` says why it addresses nothing."""
+    found = _parsed(text)
+    if isinstance(found, str):
+        raise AddressError(found)
+    return found
+
+
+@lru_cache(maxsize=8192)
+def _parsed(text: str) -> Parsed | str:
+    """The address, or why it is none. Cached, failures too: programs repeat the same
+    addresses a lot, and the compilers try many names (``x``, ``WORD_TO_INT``) as addresses."""
+    try:
+        return _parse(text)
+    except AddressError as error:
+        return str(error)
+
+
+def _parse(text: str) -> Parsed:
     match = _SHAPE.match(text.strip())
     if match is None:
         raise AddressError("not an address")

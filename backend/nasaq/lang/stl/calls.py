@@ -11,6 +11,7 @@ read at run time for BLOCK_DB, BLOCK_FC, BLOCK_FB, TIMER and COUNTER parameters.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
 
 from nasaq.ir import (
     Area,
@@ -169,6 +170,16 @@ def describe(actual: Resolved) -> str:
     return actual.text
 
 
+@cache  # a system FB's interface is fixed: its parameters are listed once (read, not changed)
+def _system_parameters(number: int) -> list[Param]:
+    params: list[Param] = []
+    for section, name, type_name in SFB_INTERFACES[number]:
+        found = elementary(type_name)
+        if section != "STAT" and found is not None:
+            params.append(Param(name, section, found, len(params)))
+    return params
+
+
 class CallLowerer:
     def __init__(self, scope: Scope, resolver: Resolver, auto: dict[int, AutoInstance]) -> None:
         self.scope = scope
@@ -293,12 +304,7 @@ class CallLowerer:
         if info is not None:
             return info.params
         if block.kind is BlockKind.SFB and block.number in SFB_INTERFACES:
-            params: list[Param] = []
-            for section, name, type_name in SFB_INTERFACES[block.number]:
-                found = elementary(type_name)
-                if section != "STAT" and found is not None:
-                    params.append(Param(name, section, found, len(params)))
-            return params
+            return _system_parameters(block.number)
         if block.kind in (BlockKind.SFC, BlockKind.SFB):
             return None
         self.scope.report("STL213", where, block=f"{block.kind.value} {block.number}")

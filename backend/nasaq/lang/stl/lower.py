@@ -27,7 +27,7 @@ from nasaq.lang.stl.calls import AutoInstance, CallLowerer
 from nasaq.lang.stl.check import JUMPS, RULES, check_operand, expected_text
 from nasaq.lang.stl.constants import NOT_LOADABLE
 from nasaq.lang.stl.mnemonics import NAMES, TEST_OPS, other_language, to_international
-from nasaq.lang.stl.resolve import Resolver, Scope, operand_text
+from nasaq.lang.stl.resolve import Resolver, Scope, cache_key, operand_text
 
 KEYWORDS = frozenset(
     [
@@ -61,6 +61,7 @@ KEYWORDS = frozenset(
 ASSERTS = frozenset(op for op in TEST_OPS if op.startswith("__ASSERT"))
 MAX_LABEL = 4
 BRACKET_OPENERS = frozenset({"A(", "AN(", "O(", "ON(", "X(", "XN("})
+BRACKET_OPS = BRACKET_OPENERS | {")", "MCR(", ")MCR"}
 MAX_BRACKET_NESTING = 7  # the S7-300/400 nesting stack
 MAX_MCR_NESTING = 8  # the MCR stack
 
@@ -90,36 +91,49 @@ class CodeLowerer:
         self.last_call: tuple[Instruction, ast.InstrNode] | None = None
         self.open_brackets: list[tuple[str, ast.Loc]] = []  # "A(" ... in source order
         self.open_mcr: list[ast.Loc] = []
+        # Generated code (SCL) gives many instructions one source position, and repeats the
+        # same instructions: origins, ops and simple instructions are worked out once each.
+        self._origins: dict[int, Origin] = {}  # by id of the source position
+        self._last_where: ast.Loc | None = None
+        self._last_origin = Origin("", 0, 0)
+        self._ops: dict[str, str] = {}
+        self._simple: dict[tuple[object, ...], tuple[str, Operand | None]] = {}
+        self._labels: dict[str, LabelRef] = {}
 
     # ---- items ------------------------------------------------------------------------------
 
     def lower(self, items: list[ast.CodeItem]) -> LoweredCode:
         pending: list[ast.LabelNode] = []
         for item in items:
-            if not (isinstance(item, ast.InstrNode) and item.param_line):
-                self.finish_call()
+            if isinstance(item, ast.InstrNode):
+                if item.param_line:
+                    self.param_line(item)
+                    continue
+                if self.last_call is not None:
+                    self.finish_call()
+                instruction = self.instruction(item)
+                if pending:
+                    self.define_label(pending.pop(), instruction)
+                self.out.code.append(instruction)
+                if instruction.op in BRACKET_OPS:
+                    self.track_brackets(instruction.op, item.loc)
+                continue
+            self.finish_call()
             if isinstance(item, ast.NetworkNode):
                 self.out.networks.append(Network("", len(self.out.code), self.comment(item.loc)))
+                self._last_where = None
                 self.flush_labels(pending)
                 self.last_call = None
             elif isinstance(item, ast.TitleNode):
                 if not self.out.networks:
                     self.out.networks.append(Network("", len(self.out.code)))
+                    self._last_where = None
                 network = self.out.networks[-1]
                 network.title = network.title or item.text
                 network.comment = network.comment or self.comment(item.loc)
             elif isinstance(item, ast.LabelNode):
                 self.flush_labels(pending)
                 pending.append(item)
-            elif isinstance(item, ast.InstrNode):
-                if item.param_line:
-                    self.param_line(item)
-                    continue
-                instruction = self.instruction(item)
-                if pending:
-                    self.define_label(pending.pop(), instruction)
-                self.out.code.append(instruction)
-                self.track_brackets(instruction.op, item.loc)
         self.finish_call()
         self.flush_labels(pending)
         self.unclosed_brackets()
@@ -208,10 +222,27 @@ class CodeLowerer:
     # ---- one instruction --------------------------------------------------------------------
 
     def origin(self, where: ast.Loc) -> Origin:
+        """Where an instruction comes from. The instructions of one SCL statement follow each
+        other: ``instruction`` takes the last origin again when ``where`` is the same (``lower``
+        forgets it when a network starts)."""
         network = len(self.out.networks) or 1
-        return Origin(self.scope.file, where.line, where.column, network)
+        found = self._origins.get(id(where))  # the syntax tree keeps each ``where`` alive
+        if found is None or found.network != network:
+            found = Origin(self.scope.file, where.line, where.column, network)
+            self._origins[id(where)] = found
+        self._last_where, self._last_origin = where, found
+        return found
 
     def op_of(self, node: ast.InstrNode) -> str | None:
+        """The international op of an instruction (None: reported); known mnemonics once."""
+        found = self._ops.get(node.mnemonic)
+        if found is None:
+            found = self._op_of(node)
+            if found is not None:
+                self._ops[node.mnemonic] = found
+        return found
+
+    def _op_of(self, node: ast.InstrNode) -> str | None:
         mnemonic = node.mnemonic.upper()
         if mnemonic in KEYWORDS:
             self.scope.report("STL108", node.loc, keyword=node.mnemonic)
@@ -235,7 +266,27 @@ class CodeLowerer:
         return None
 
     def instruction(self, node: ast.InstrNode) -> Instruction:
-        origin = self.origin(node.loc)
+        """The IR instruction of a statement. A jump or an instruction with at most one operand,
+        written as one before, is that one again (at its own origin), unless that one reported
+        something."""
+        where = node.loc
+        origin = self._last_origin if where is self._last_where else self.origin(where)
+        key = _simple_key(node)
+        known = self._simple.get(key) if key is not None else None
+        if known is not None:
+            op, operand = known
+            if isinstance(operand, LabelRef):  # a jump: its label is resolved at the end
+                self.out.jumps.append(Jump(operand.name, node.operands[0].loc))
+            return Instruction(op, operand, origin)
+        reported = len(self.scope.diagnostics)
+        instruction = self.new_instruction(node, origin)
+        op = instruction.op
+        repeatable = op != "CALL" and op not in ASSERTS and op != "__FEATURE"
+        if key is not None and repeatable and len(self.scope.diagnostics) == reported:
+            self._simple[key] = (op, instruction.operand)
+        return instruction
+
+    def new_instruction(self, node: ast.InstrNode, origin: Origin) -> Instruction:
         op = self.op_of(node)
         if op is None:
             return Instruction(node.mnemonic.upper(), None, origin)
@@ -280,8 +331,12 @@ class CodeLowerer:
                 expected="a label",
             )
             return None
-        self.out.jumps.append(Jump(name.upper(), target.loc))
-        return LabelRef(name.upper())
+        label = name.upper()
+        self.out.jumps.append(Jump(label, target.loc))
+        found = self._labels.get(label)
+        if found is None:
+            found = self._labels[label] = LabelRef(label)
+        return found
 
     def two_operands(self, node: ast.InstrNode, op: str, instruction: Instruction) -> None:
         count = len(node.operands)
@@ -342,6 +397,16 @@ class CodeLowerer:
             if entry(code).severity is not Severity.WARNING:
                 return None  # a warning (e.g. STL237) keeps the operand as written
         return _plain(resolved.operand)
+
+
+def _simple_key(node: ast.InstrNode) -> tuple[object, ...] | None:
+    """What an instruction with at most one operand is lowered from (None for others): its
+    mnemonic and ``resolve.cache_key`` of the operand."""
+    if node.args is not None or len(node.operands) > 1:
+        return None
+    if not node.operands:
+        return (node.mnemonic,)
+    return cache_key(node.operands[0], node.mnemonic)
 
 
 def _plain(operand: Operand | MultiInstance) -> Operand | None:

@@ -154,10 +154,27 @@ class Resolver:
         self.index = scope.index
         self.layout = scope.index.layout
         self._locals: dict[str, tuple[Slot, bool]] | None = None
+        self._known: dict[tuple[object, ...], Resolved] = {}
 
     # ---- entry ------------------------------------------------------------------------------
 
     def operand(self, node: ast.OperandNode) -> Resolved | None:
+        """What an operand addresses. A block uses the same operands again and again (code
+        that SCL generated, above all): one written the same way is resolved once, unless
+        resolving it reported something (reported again at each use)."""
+        key = cache_key(node)
+        if key is None:
+            return self._operand(node)
+        found = self._known.get(key)
+        if found is None:
+            reported = len(self.scope.diagnostics)
+            found = self._operand(node)
+            if found is None or len(self.scope.diagnostics) != reported:
+                return found
+            self._known[key] = found
+        return found
+
+    def _operand(self, node: ast.OperandNode) -> Resolved | None:
         text = operand_text(node)
         if isinstance(node, ast.AddressNode):
             return self.address(node.text, node.loc, text)
@@ -585,6 +602,35 @@ class Resolver:
         byte, bit = divmod(slot.offset_bits, 8)
         width = width_of(slot.type) or Width.BYTE
         return self.numbered(Direct(Area.DB, width, byte, bit, parsed.number), slot.type, text)
+
+
+def cache_key(node: ast.OperandNode, head: str = "") -> tuple[object, ...] | None:
+    """What the resolution of an operand depends on (the operand as written, not where), after
+    ``head``; None for those resolved at every use: symbols with an absolute part (``"DB".DBW
+    2``, rare). A flat tuple where it can be: it is made for every use."""
+    kind = type(node)
+    if type(node) is ast.SymbolNode:
+        if not node.path:
+            return (head, kind, node.name, node.local, node.absolute_db)
+        path: list[object] = []
+        for part in node.path:
+            if isinstance(part, ast.AddressNode):
+                return None
+            path.append(part if isinstance(part, str) else tuple(part))
+        return (head, kind, node.name, node.local, node.absolute_db, *path)
+    if isinstance(node, ast.LiteralNode):
+        return (head, kind, node.kind, node.text)
+    if isinstance(node, ast.AddressNode | ast.StatusNode):
+        return (head, kind, node.text)
+    if isinstance(node, ast.BareNode):
+        return (head, kind, node.name, node.arg)
+    if isinstance(node, ast.IndirectNode):  # DBW [AR1, P#0.0], I [MD 2]
+        first = cache_key(node.first)
+        second = () if node.second is None else cache_key(node.second)
+        if first is None or second is None:
+            return None
+        return (head, kind, node.area, first, second)
+    return None
 
 
 def _is_address(text: str) -> bool:

@@ -2,15 +2,19 @@
 of every OB, FB and FC of a bound index (``nasaq.lang.scl.bind``), and the block rules over every
 block (declarations of UDTs and DBs too, a DB's assignment section).
 
-Each statement is given to every statement rule; then the expressions it contains directly are
-typed (so a name used only as an actual parameter is still checked); then its nested statements
-follow. An expression is typed once (``Context.type_of`` caches), and an expression whose type is
-already an error (``types.ERROR``) makes nothing built on it reported again: one mistake gives one
-diagnostic. Before any block, the instance DBs that calls create are entered in the index
-(``instances``), so that their members are typed wherever they are used.
+Each statement is given to the statement rules of its class; then the expressions it contains
+directly are typed (so a name used only as an actual parameter is still checked); then its nested
+statements follow. An expression is typed once (``Context.type_of`` caches), and an expression
+whose type is already an error (``types.ERROR``) makes nothing built on it reported again: one
+mistake gives one diagnostic. Before any block, one walk over each block's code finds what the
+rules look for in it (``walk.outline``: its calls, its operations), and the instance DBs that
+calls create are entered in the index (``instances``), so that their members are typed wherever
+they are used.
 """
 
 from __future__ import annotations
+
+from typing import get_args
 
 from nasaq.diagnostics import Diagnostic
 from nasaq.ir import BlockKind
@@ -18,8 +22,8 @@ from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import SclBlock, SclIndex
 from nasaq.lang.scl.typecheck.context import Context
 from nasaq.lang.scl.typecheck.instances import note_implicit_instances
-from nasaq.lang.scl.typecheck.rules import BLOCKS, EXPRESSIONS, STATEMENTS
-from nasaq.lang.scl.typecheck.walk import bodies, expressions
+from nasaq.lang.scl.typecheck.rules import BLOCKS, EXPRESSIONS, STATEMENTS, StatementRule
+from nasaq.lang.scl.typecheck.walk import Outline, bodies, expressions, outline
 
 CODE_BLOCKS = (BlockKind.OB, BlockKind.FB, BlockKind.FC)
 
@@ -29,10 +33,11 @@ def check_block(index: SclIndex, block: SclBlock) -> list[Diagnostic]:
     return checked_block(index, block).diagnostics
 
 
-def checked_block(index: SclIndex, block: SclBlock) -> Context:
+def checked_block(index: SclIndex, block: SclBlock, found: Outline | None = None) -> Context:
     """The context a block was checked in: its ``diagnostics``, and the types of its
-    expressions, which the code generator reads instead of typing everything again."""
-    ctx = Context(index, block, EXPRESSIONS)
+    expressions, which the code generator reads instead of typing everything again.
+    ``found`` is the block's outline when the caller has it already."""
+    ctx = Context(index, block, EXPRESSIONS, found)
     if block.kind in CODE_BLOCKS:
         _statements(ctx, block.node.code)
     for rule in BLOCKS:
@@ -45,21 +50,29 @@ def check_index(
 ) -> list[Diagnostic]:
     """The problems of every block of the index, in block order; ``contexts`` (if given)
     receives each block's checking context."""
-    note_implicit_instances(index)
+    outlines = [(block, outline(block.node.code)) for block in index]
+    note_implicit_instances(index, outlines)
     found: list[Diagnostic] = []
-    for block in index:
+    for block, block_outline in outlines:
         if block.external:  # an STL block in the index: the STL compiler checks it
             continue
-        ctx = checked_block(index, block)
+        ctx = checked_block(index, block, block_outline)
         found.extend(ctx.diagnostics)
         if contexts is not None:
             contexts[(block.kind, block.number)] = ctx
     return found
 
 
+# The statement rules of each statement class, in the order of ``STATEMENTS``.
+_RULES: dict[type, list[StatementRule]] = {
+    kind: [rule for rule, kinds in STATEMENTS if issubclass(kind, kinds)]
+    for kind in get_args(ast.Stmt)
+}
+
+
 def _statements(ctx: Context, body: list[ast.Stmt]) -> None:
     for stmt in body:
-        for rule in STATEMENTS:
+        for rule in _RULES.get(type(stmt), ()):
             rule(ctx, stmt)
         for expression in expressions(stmt):
             ctx.type_of(expression)

@@ -13,8 +13,10 @@ from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import UNKNOWN, Constant, SclBlock, SclIndex, Variable
 from nasaq.lang.scl.format import expr as expr_text
 from nasaq.lang.scl.typecheck.types import ERROR, DbRef, Type
+from nasaq.lang.scl.typecheck.walk import Outline
+from nasaq.lang.scl.typecheck.walk import outline as outline_of
 from nasaq.lang.stl.diag import problem
-from nasaq.lang.types import BlockType, DataType, StructType
+from nasaq.lang.types import BlockType, DataType, Elementary, StructType
 
 ExpressionRule = Callable[["Context", Any], Type]
 
@@ -25,15 +27,25 @@ class Context:
         index: SclIndex,
         block: SclBlock,
         expressions: dict[type, ExpressionRule],
+        outline: Outline | None = None,
     ) -> None:
         self.index = index
         self.block = block
         self.expressions = expressions
         self.diagnostics: list[Diagnostic] = []
         self._types: dict[int, Type] = {}
-        self._busy: set[int] = set()
         self.reported: set[str] = set()  # mistakes reported once per block (undeclared names)
         self._db_members: dict[str, Variable] | None = None
+        self._variable_types: dict[str, Type] = {}
+        self._members_of: dict[DbRef | BlockType, dict[str, DataType] | None] = {}
+        self._outline = outline
+
+    @property
+    def outline(self) -> Outline:
+        """The calls and operations of the block's code (``walk.outline``), found once."""
+        if self._outline is None:
+            self._outline = outline_of(self.block.node.code)
+        return self._outline
 
     @property
     def file(self) -> str:
@@ -45,19 +57,14 @@ class Context:
         return ERROR
 
     def type_of(self, node: ast.Expr) -> Type:
-        """The type of an expression, computed (and its problems reported) once."""
+        """The type of an expression, computed (and its problems reported) once. While it is
+        computed it reads as ``ERROR``: a CONST defined through itself is one."""
         key = id(node)
-        found = self._types.get(key)
-        if found is not None:
-            return found
-        if key in self._busy:  # a CONST defined through itself
-            return ERROR
-        self._busy.add(key)
-        try:
-            found = self.expressions[type(node)](self, node)
-        finally:
-            self._busy.discard(key)
-        self._types[key] = found
+        types = self._types
+        found = types.get(key)
+        if found is None:
+            types[key] = ERROR
+            found = types[key] = self.expressions[type(node)](self, node)
         return found
 
     @staticmethod
@@ -65,6 +72,17 @@ class Context:
         return expr_text(node)
 
     # ---- names ------------------------------------------------------------------------------
+
+    def variable_type(self, name: str) -> Type | None:
+        """The type of a variable of the block as an expression (``declared``), None if there
+        is no such variable; cached by spelling, as names are typed at every use."""
+        found = self._variable_types.get(name)
+        if found is None:
+            variable = self.variable(name)
+            if variable is None:
+                return None
+            found = self._variable_types[name] = self.declared(variable.type)
+        return found
 
     def variable(self, name: str) -> Variable | None:
         """A variable of the block; in a DB's assignment section, a member of the DB."""
@@ -90,10 +108,19 @@ class Context:
     @staticmethod
     def declared(data_type: DataType) -> Type:
         """A declared type as an expression's type (an unknown one is silent)."""
-        return ERROR if data_type == UNKNOWN else data_type
+        unknown = isinstance(data_type, Elementary) and data_type.name == UNKNOWN.name
+        return ERROR if unknown else data_type
 
     def members(self, value: Type) -> dict[str, DataType] | None:
-        """The members a value of this type has (casefolded names), None if it has none."""
+        """The members a value of this type has (casefolded names), None if it has none; for a
+        DB or an FB/UDT instance found once (every ``inst.x`` asks)."""
+        if not isinstance(value, DbRef | BlockType):
+            return self._members(value)
+        if value not in self._members_of:
+            self._members_of[value] = self._members(value)
+        return self._members_of[value]
+
+    def _members(self, value: Type) -> dict[str, DataType] | None:
         if isinstance(value, DbRef):
             made_of = None if value.number is None else self.index.db_type_of(value.number)
             if made_of is None:

@@ -13,7 +13,7 @@ import re
 from nasaq.ir import BlockKind
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import SclBlock, SclIndex
-from nasaq.lang.scl.typecheck import walk
+from nasaq.lang.scl.typecheck.walk import Outline
 from nasaq.lang.stl.addresses import AddressError, parse_address
 from nasaq.lang.system_blocks import SFB_INTERFACES
 from nasaq.lang.types import BlockType
@@ -51,8 +51,9 @@ def exists(index: SclIndex, kind: BlockKind, number: int) -> bool:
     return index.get(kind, number) is not None
 
 
-def note_implicit_instances(index: SclIndex) -> None:
-    """Fills ``index.implicit_dbs`` from the symbol table and from every ``FB.DB(...)`` call."""
+def note_implicit_instances(index: SclIndex, outlines: list[tuple[SclBlock, Outline]]) -> None:
+    """Fills ``index.implicit_dbs`` from the symbol table and from every ``FB.DB(...)`` call
+    (``outlines``: every block of the index with the outline of its code)."""
     for symbol in index.symbols.symbols.values():
         parsed = symbol.parsed
         typed = _FB_TYPE.match(symbol.type)
@@ -61,8 +62,8 @@ def note_implicit_instances(index: SclIndex) -> None:
         kind, number = BlockKind(typed[1].upper()), int(typed[2])
         if index.get(BlockKind.DB, parsed.number) is None and exists(index, kind, number):
             index.implicit_dbs.setdefault(parsed.number, BlockType(kind.value, number))
-    for block in index:
-        for call in walk.calls(block.node.code):
+    for block, found in outlines:
+        for call in found.calls:
             callee = call.callee
             if not isinstance(callee, ast.Member):
                 continue

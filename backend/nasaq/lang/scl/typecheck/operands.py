@@ -20,6 +20,7 @@ if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
 
 WIDTH_TYPES = {1: "BOOL", 8: "BYTE", 16: "WORD", 32: "DWORD"}
+_WIDTH_ELEMENTARY = {bits: Elementary(name) for bits, name in WIDTH_TYPES.items()}
 _DB_PART = re.compile(r"^DB?(?P<size>[XBWD])?(?P<byte>\d+)(?:\.(?P<bit>\d+))?$")
 
 
@@ -41,7 +42,7 @@ def address(ctx: Context, node: ast.Address) -> Type:
             return DbRef(parsed.number)
         return BlockRef(parsed.block, parsed.number)
     if parsed.width is not None:
-        return Elementary(WIDTH_TYPES[int(parsed.width)])
+        return _WIDTH_ELEMENTARY[int(parsed.width)]
     return ANYTHING
 
 

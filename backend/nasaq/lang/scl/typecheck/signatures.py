@@ -14,6 +14,7 @@ Which parameters must be supplied (S7-SCL, as STEP 7's CALL):
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
 
 from nasaq.ir import BlockKind
 from nasaq.lang.scl.bind import IEC_INSTANCES, SclBlock, SclIndex
@@ -76,18 +77,22 @@ def of_block(block: SclBlock) -> Signature:
 def of_instance(index: SclIndex, instance: BlockType) -> Signature | None:
     """The parameters of the FB or SFB an instance belongs to; None when they are unknown."""
     if instance.kind == "SFB":
-        interface = SFB_INTERFACES.get(instance.number)
-        if interface is None:
-            return None
-        params = [
-            Param(name, section, (found,))
-            for section, name, type_name in interface
-            if section in PARAMETER_SECTIONS and (found := elementary(type_name)) is not None
-        ]
-        label = IEC_NAMES.get(instance.number, f"SFB {instance.number}")
-        return _signature(label, "SFB", params)
+        return _system(instance.number)
     block = index.get(BlockKind.FB, instance.number) if instance.kind == "FB" else None
     return of_block(block) if block is not None else None
+
+
+@cache  # a system FB's interface is fixed: one signature each, shared (read, never changed)
+def _system(number: int) -> Signature | None:
+    interface = SFB_INTERFACES.get(number)
+    if interface is None:
+        return None
+    params = [
+        Param(name, section, (found,))
+        for section, name, type_name in interface
+        if section in PARAMETER_SECTIONS and (found := elementary(type_name)) is not None
+    ]
+    return _signature(IEC_NAMES.get(number, f"SFB {number}"), "SFB", params)
 
 
 def _s5(name: str, number: str, area: str, inputs: list[str], outputs: list[str]) -> Signature:

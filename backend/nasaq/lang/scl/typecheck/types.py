@@ -14,6 +14,7 @@ INT, DINT → INT, REAL → INT ...) needs the explicit ``*_TO_*`` function.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cache, lru_cache
 from typing import Any
 
 from nasaq.ir import BlockKind
@@ -132,7 +133,7 @@ LONG = {"TOD": "TIME_OF_DAY", "DT": "DATE_AND_TIME"}
 
 def is_silent(value: Type) -> bool:
     """A type nothing is reported about (an error already reported, or not known)."""
-    return isinstance(value, Special) or value == Elementary("UNKNOWN")
+    return isinstance(value, Special) or (isinstance(value, Elementary) and value.name == "UNKNOWN")
 
 
 def scalar(value: Type) -> str | None:
@@ -184,6 +185,7 @@ def widens(source: str, target: str) -> bool:
     return source == "CHAR" and target == "STRING"
 
 
+@cache  # a few dozen name pairs, asked for every operation
 def wider(left: str, right: str) -> str | None:
     """The common type two operands are converted to, if there is one."""
     if widens(left, right):
@@ -201,7 +203,8 @@ def function_name(source: str, target: str) -> str | None:
 
 @dataclass(slots=True)
 class Verdict:
-    """Whether a value may be stored in a variable: ``code`` None when it may."""
+    """Whether a value may be stored in a variable: ``code`` None when it may. Verdicts are
+    shared (``OK``, and those of ``assignable`` between elementary types): read, never change."""
 
     code: str | None = None
     params: dict[str, Any] = field(default_factory=dict)
@@ -212,6 +215,25 @@ OK = Verdict()
 
 def assignable(value: Type, target: DataType) -> Verdict:
     """Whether ``value`` may be assigned (or passed) to a variable of type ``target``."""
+    if type(target) is Elementary:
+        if type(value) is Elementary:
+            return _between(value.name, target.name)
+        if type(value) is IntConst:
+            return _constant_into(value.value, target.name)
+    return _assignable(value, target)
+
+
+@cache  # between two elementary types the verdict depends on their names only
+def _between(source: str, goal: str) -> Verdict:
+    return _assignable(Elementary(source), Elementary(goal))
+
+
+@lru_cache(maxsize=4096)  # an integer constant into an elementary type: by value and name
+def _constant_into(value: int, goal: str) -> Verdict:
+    return _assignable(IntConst(value), Elementary(goal))
+
+
+def _assignable(value: Type, target: DataType) -> Verdict:
     if is_silent(value) or is_silent(target) or isinstance(value, Special):
         return OK
     goal = scalar(target)

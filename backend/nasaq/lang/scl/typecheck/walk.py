@@ -1,84 +1,252 @@
 """Walking the statements and expressions of a block: shared by the checker's walker and the
-rules that look at a whole body (loops, labels, the return value) or at nested expressions."""
+rules that look at a whole body (loops, labels, the return value) or at nested expressions.
+
+Each node class has its own small function in a table keyed by the class (the node classes
+have no subclasses): one dictionary look-up per node instead of a chain of ``isinstance``
+tests, which made walking the largest part of checking a big source."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
 
 from nasaq.lang.scl import ast
 
 LOOPS = (ast.For, ast.While, ast.Repeat)
 
+_Parts = Callable[[Any], list[Any]]
+
+
+def _for_expressions(stmt: ast.For) -> list[ast.Expr]:
+    found = [stmt.variable, stmt.start, stmt.end]
+    return found + ([stmt.step] if stmt.step is not None else [])
+
+
+def _branch_bodies(stmt: ast.If | ast.Case) -> list[list[ast.Stmt]]:
+    found = [branch.body for branch in stmt.branches]
+    return found + ([stmt.orelse] if stmt.orelse is not None else [])
+
+
+_EXPRESSIONS: dict[type, _Parts] = {
+    ast.Assign: lambda stmt: [stmt.target, stmt.value],
+    ast.CallStmt: lambda stmt: [stmt.call],
+    ast.If: lambda stmt: [branch.condition for branch in stmt.branches],
+    ast.Case: lambda stmt: [stmt.selector],
+    ast.For: _for_expressions,
+    ast.While: lambda stmt: [stmt.condition],
+    ast.Repeat: lambda stmt: [stmt.condition],
+}
+
+_BODIES: dict[type, _Parts] = {
+    ast.If: _branch_bodies,
+    ast.Case: _branch_bodies,
+    ast.For: lambda stmt: [stmt.body],
+    ast.While: lambda stmt: [stmt.body],
+    ast.Repeat: lambda stmt: [stmt.body],
+    ast.Region: lambda stmt: [stmt.body],
+}
+
 
 def expressions(stmt: ast.Stmt) -> list[ast.Expr]:
     """The expressions a statement holds directly (not those of its nested statements)."""
-    if isinstance(stmt, ast.Assign):
-        return [stmt.target, stmt.value]
-    if isinstance(stmt, ast.CallStmt):
-        return [stmt.call]
-    if isinstance(stmt, ast.If):
-        return [branch.condition for branch in stmt.branches]
-    if isinstance(stmt, ast.Case):
-        return [stmt.selector]
-    if isinstance(stmt, ast.For):
-        found = [stmt.variable, stmt.start, stmt.end]
-        return found + ([stmt.step] if stmt.step is not None else [])
-    if isinstance(stmt, ast.While | ast.Repeat):
-        return [stmt.condition]
-    return []
+    parts = _EXPRESSIONS.get(type(stmt))
+    return parts(stmt) if parts is not None else []
 
 
 def bodies(stmt: ast.Stmt) -> list[list[ast.Stmt]]:
     """The statement lists nested in a statement (branches, loop bodies, a REGION)."""
-    if isinstance(stmt, ast.If):
-        found = [branch.body for branch in stmt.branches]
-        return found + ([stmt.orelse] if stmt.orelse is not None else [])
-    if isinstance(stmt, ast.Case):
-        found = [branch.body for branch in stmt.branches]
-        return found + ([stmt.orelse] if stmt.orelse is not None else [])
-    if isinstance(stmt, ast.For | ast.While | ast.Repeat | ast.Region):
-        return [stmt.body]
-    return []
+    parts = _BODIES.get(type(stmt))
+    return parts(stmt) if parts is not None else []
 
 
-def statements(body: list[ast.Stmt]) -> Iterator[ast.Stmt]:
+def statements(body: list[ast.Stmt]) -> list[ast.Stmt]:
     """Every statement of a body, nested ones included, in source order."""
+    found: list[ast.Stmt] = []
     for stmt in body:
-        yield stmt
-        for nested in bodies(stmt):
-            yield from statements(nested)
+        found.append(stmt)
+        parts = _BODIES.get(type(stmt))
+        if parts is not None:
+            for inner in parts(stmt):
+                found += statements(inner)
+    return found
 
 
-def children(node: ast.Expr) -> list[ast.Expr]:
-    """The expressions an expression is built of."""
-    if isinstance(node, ast.Unary):
-        return [node.operand]
-    if isinstance(node, ast.Binary):
-        return [node.left, node.right]
-    if isinstance(node, ast.Paren):
-        return [node.inner]
-    if isinstance(node, ast.Member):
-        return [node.base, node.name]
-    if isinstance(node, ast.Index):
-        return [node.base, *node.indices]
-    if isinstance(node, ast.IndexedAddress):
-        return list(node.indices)
-    if isinstance(node, ast.Call):
-        return [node.callee, *(arg.value for arg in node.args)]
-    return []
+def nested(node: ast.Expr) -> list[ast.Expr]:
+    """An expression and every expression inside it, each before its parts (left to right)."""
+    found: list[ast.Expr] = []
+    _add(node, found)
+    return found
 
 
-def nested(node: ast.Expr) -> Iterator[ast.Expr]:
-    """An expression and every expression inside it."""
-    yield node
-    for child in children(node):
-        yield from nested(child)
+def _add(node: ast.Expr, found: list[ast.Expr]) -> None:
+    add = _ADD.get(type(node))
+    if add is None:  # a name, constant or address: no parts
+        found.append(node)
+    else:
+        add(node, found)
 
 
-def calls(body: list[ast.Stmt]) -> Iterator[ast.Call]:
+def _unary(node: ast.Unary, found: list[ast.Expr]) -> None:
+    found.append(node)
+    _add(node.operand, found)
+
+
+def _binary(node: ast.Binary, found: list[ast.Expr]) -> None:
+    found.append(node)
+    _add(node.left, found)
+    _add(node.right, found)
+
+
+def _paren(node: ast.Paren, found: list[ast.Expr]) -> None:
+    found.append(node)
+    _add(node.inner, found)
+
+
+def _member(node: ast.Member, found: list[ast.Expr]) -> None:
+    found.append(node)
+    _add(node.base, found)
+    _add(node.name, found)
+
+
+def _index(node: ast.Index, found: list[ast.Expr]) -> None:
+    found.append(node)
+    _add(node.base, found)
+    for index in node.indices:
+        _add(index, found)
+
+
+def _indexed_address(node: ast.IndexedAddress, found: list[ast.Expr]) -> None:
+    found.append(node)
+    for index in node.indices:
+        _add(index, found)
+
+
+def _call(node: ast.Call, found: list[ast.Expr]) -> None:
+    found.append(node)
+    _add(node.callee, found)
+    for arg in node.args:
+        _add(arg.value, found)
+
+
+_ADD: dict[type, Callable[[Any, list[ast.Expr]], None]] = {
+    ast.Unary: _unary,
+    ast.Binary: _binary,
+    ast.Paren: _paren,
+    ast.Member: _member,
+    ast.Index: _index,
+    ast.IndexedAddress: _indexed_address,
+    ast.Call: _call,
+}
+
+
+def calls(body: list[ast.Stmt]) -> list[ast.Call]:
     """Every call in a body, in statements and inside expressions."""
-    for stmt in statements(body):
-        for expression in expressions(stmt):
-            for node in nested(expression):
-                if isinstance(node, ast.Call):
-                    yield node
+    return outline(body).calls
+
+
+Loops = tuple[int, ...]  # the loops around a statement, outermost first (their ids)
+Signed = tuple[ast.Binary, ast.Unary]  # A * -B: the operation, the sign
+
+
+@dataclass(slots=True)
+class Outline:
+    """What the rules look for in the code of a block, found in one walk: its calls (in source
+    order); by statement (id), the binary operations whose right operand begins with a sign
+    (``A * -B``, ``A + -B * C``) inside the expressions it holds directly, with that sign; and
+    the labels, GOTO, EXIT and CONTINUE statements with the loops around each."""
+
+    calls: list[ast.Call] = field(default_factory=list)
+    signs: dict[int, list[Signed]] = field(default_factory=dict)
+    jumps: list[tuple[ast.Label | ast.Goto | ast.Exit | ast.Continue, Loops]] = field(
+        default_factory=list
+    )
+
+
+JUMPS = (ast.Label, ast.Goto, ast.Exit, ast.Continue)
+
+
+def outline(body: list[ast.Stmt]) -> Outline:
+    found = Outline()
+    _outline(body, (), found)
+    return found
+
+
+def _outline(body: list[ast.Stmt], loops: Loops, found: Outline) -> None:
+    for stmt in body:
+        parts = _EXPRESSIONS.get(type(stmt))
+        if parts is not None:
+            signs: list[Signed] = []
+            for expression in parts(stmt):
+                _operations(expression, found.calls, signs)
+            if signs:
+                found.signs[id(stmt)] = signs
+        elif isinstance(stmt, JUMPS):
+            found.jumps.append((stmt, loops))
+        inner = _BODIES.get(type(stmt))
+        if inner is not None:
+            around = (*loops, id(stmt)) if isinstance(stmt, LOOPS) else loops
+            for nested_body in inner(stmt):
+                _outline(nested_body, around, found)
+
+
+def _operations(node: ast.Expr, calls: list[ast.Call], signs: list[Signed]) -> None:
+    """Adds the calls and the signed binary operations (``Outline``) of an expression, itself
+    included, in the order of ``nested``; names and constants (most nodes) cost a look-up."""
+    add = _OPERATIONS.get(type(node))
+    if add is not None:
+        add(node, calls, signs)
+
+
+def _in_unary(node: ast.Unary, calls: list[ast.Call], signs: list[Signed]) -> None:
+    _operations(node.operand, calls, signs)
+
+
+def _in_binary(node: ast.Binary, calls: list[ast.Call], signs: list[Signed]) -> None:
+    first = node.right
+    while type(first) is ast.Binary:  # A + -B * C: the sign still follows the +
+        first = first.left
+    if type(first) is ast.Unary and first.op in ("-", "+"):
+        signs.append((node, first))
+    _operations(node.left, calls, signs)
+    _operations(node.right, calls, signs)
+
+
+def _in_paren(node: ast.Paren, calls: list[ast.Call], signs: list[Signed]) -> None:
+    _operations(node.inner, calls, signs)
+
+
+def _in_member(node: ast.Member, calls: list[ast.Call], signs: list[Signed]) -> None:
+    _operations(node.base, calls, signs)
+    _operations(node.name, calls, signs)
+
+
+def _in_index(node: ast.Index, calls: list[ast.Call], signs: list[Signed]) -> None:
+    _operations(node.base, calls, signs)
+    for index in node.indices:
+        _operations(index, calls, signs)
+
+
+def _in_indexed_address(
+    node: ast.IndexedAddress, calls: list[ast.Call], signs: list[Signed]
+) -> None:
+    for index in node.indices:
+        _operations(index, calls, signs)
+
+
+def _in_call(node: ast.Call, calls: list[ast.Call], signs: list[Signed]) -> None:
+    calls.append(node)
+    _operations(node.callee, calls, signs)
+    for arg in node.args:
+        _operations(arg.value, calls, signs)
+
+
+_OPERATIONS: dict[type, Callable[[Any, list[ast.Call], list[Signed]], None]] = {
+    ast.Unary: _in_unary,
+    ast.Binary: _in_binary,
+    ast.Paren: _in_paren,
+    ast.Member: _in_member,
+    ast.Index: _in_index,
+    ast.IndexedAddress: _in_indexed_address,
+    ast.Call: _in_call,
+}

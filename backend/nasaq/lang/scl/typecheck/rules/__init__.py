@@ -71,13 +71,18 @@ EXPRESSIONS: dict[type, ExpressionRule] = {
 StatementRule = Callable[[Context, ast.Stmt], None]
 BlockRule = Callable[[Context], None]
 
-STATEMENTS: list[StatementRule] = [
-    assign_input.check,
-    assignment.check,
-    conditions.check,
-    for_variable.check,
-    case_labels.check,
-    sign_after_operator.check,
+# The statements that hold expressions (the sign rule looks inside all of them).
+WITH_EXPRESSIONS = (ast.Assign, ast.CallStmt, ast.If, ast.Case, ast.For, ast.While, ast.Repeat)
+
+# The statement rules in the order they run, each with the statements it looks at: the walker
+# gives a statement only to the rules of its class.
+STATEMENTS: list[tuple[StatementRule, tuple[type, ...]]] = [
+    (assign_input.check, (ast.Assign,)),
+    (assignment.check, (ast.Assign,)),
+    (conditions.check, (ast.If, ast.While, ast.Repeat)),
+    (for_variable.check, (ast.For,)),
+    (case_labels.check, (ast.Case,)),
+    (sign_after_operator.check, WITH_EXPRESSIONS),
 ]
 
 # Run for every block after its code (if it has code): the declarations, the DB's values.

@@ -9,12 +9,10 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from nasaq.lang.scl import ast
-from nasaq.lang.scl.typecheck.walk import LOOPS, bodies
+from nasaq.lang.scl.typecheck.walk import Loops
 
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
-
-Loops = tuple[int, ...]  # the loops around a statement, outermost first (their ids)
 
 
 @dataclass(slots=True)
@@ -26,7 +24,7 @@ class _Found:
 def check(ctx: Context) -> None:
     _declarations(ctx)
     found = _Found({}, [])
-    _body(ctx, ctx.block.node.code, (), found)
+    _jumps(ctx, found)
     for goto, loops in found.gotos:
         mark = found.marks.get(goto.label.casefold())
         if mark is None:
@@ -55,8 +53,8 @@ def _declared(ctx: Context, key: str, label: str, where: ast.Loc) -> bool:
     return False
 
 
-def _body(ctx: Context, body: list[ast.Stmt], loops: Loops, found: _Found) -> None:
-    for stmt in body:
+def _jumps(ctx: Context, found: _Found) -> None:
+    for stmt, loops in ctx.outline.jumps:
         if isinstance(stmt, ast.Label):
             key = stmt.name.casefold()
             first = found.marks.get(key)
@@ -68,6 +66,3 @@ def _body(ctx: Context, body: list[ast.Stmt], loops: Loops, found: _Found) -> No
             ctx, stmt.label.casefold(), stmt.label, stmt.loc
         ):
             found.gotos.append((stmt, loops))
-        inner = (*loops, id(stmt)) if isinstance(stmt, LOOPS) else loops
-        for nested in bodies(stmt):
-            _body(ctx, nested, inner, found)

@@ -4,6 +4,7 @@ constants get a type that adapts to where they are used (``types.IntConst`` ...)
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import TYPE_CHECKING
 
 from nasaq.lang.scl import ast
@@ -23,6 +24,8 @@ from nasaq.lang.types import Elementary
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
 
+BOOL = Elementary("BOOL")
+REAL = Elementary("REAL")
 _INTEGER_PREFIXES = {"INT": "INT", "DINT": "DINT"}
 _BIT_PREFIXES = {
     "B": "BYTE",
@@ -36,11 +39,11 @@ _BIT_PREFIXES = {
 
 def literal(ctx: Context, node: ast.Literal) -> Type:
     if node.kind == "BOOL":
-        return Elementary("BOOL")
+        return BOOL
     if node.kind == "REAL":
-        return Elementary("REAL")
+        return REAL
     if node.kind == "INTEGER":
-        return IntConst(int(node.text.replace("_", "")))
+        return _integer(node.text)
     if node.kind == "STRING":
         return CharsConst(_length(node.text[1:-1]))
     try:
@@ -50,6 +53,11 @@ def literal(ctx: Context, node: ast.Literal) -> Type:
         if error.code == "STL214":
             return ctx.report("SCL218", node.loc, **params)
         return ctx.report("SCL219", node.loc, text=params["text"], reason=params["reason"])
+
+
+@lru_cache(maxsize=4096)  # programs repeat the same few numbers
+def _integer(text: str) -> IntConst:
+    return IntConst(int(text.replace("_", "")))
 
 
 def _bad(text: str, reason: str) -> ConstantError:
@@ -71,6 +79,7 @@ def _number(body: str, text: str) -> int:
     return sign * constants.parse_int(body.lstrip("+-"), 10, text)
 
 
+@lru_cache(maxsize=4096)  # a typed constant's type depends on its text only (errors raise)
 def _typed(text: str) -> Type:
     prefix, _, body = text.partition("#")
     prefix = prefix.upper()

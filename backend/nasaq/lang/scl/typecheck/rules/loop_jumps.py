@@ -7,19 +7,12 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nasaq.lang.scl import ast
-from nasaq.lang.scl.typecheck.walk import LOOPS, bodies
 
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
 
 
 def check(ctx: Context) -> None:
-    _body(ctx, ctx.block.node.code, in_loop=False)
-
-
-def _body(ctx: Context, body: list[ast.Stmt], in_loop: bool) -> None:
-    for stmt in body:
-        if isinstance(stmt, ast.Exit | ast.Continue) and not in_loop:
+    for stmt, loops in ctx.outline.jumps:
+        if isinstance(stmt, ast.Exit | ast.Continue) and not loops:
             ctx.report("SCL237", stmt.loc, statement=type(stmt).__name__.upper())
-        for nested in bodies(stmt):
-            _body(ctx, nested, in_loop or isinstance(stmt, LOOPS))

@@ -10,6 +10,7 @@ An operand whose type is already an error makes the result an error, silently.""
 
 from __future__ import annotations
 
+from functools import cache
 from typing import TYPE_CHECKING
 
 from nasaq.lang.scl import ast
@@ -19,6 +20,7 @@ from nasaq.lang.scl.typecheck.types import (
     ERROR,
     INTEGERS,
     NUMBERS,
+    RANGES,
     TEXT,
     IntConst,
     Type,
@@ -36,6 +38,8 @@ LOGIC = frozenset({"AND", "&", "OR", "XOR"})
 COMPARE = frozenset({"=", "<>", "<", ">", "<=", ">="})
 ARITHMETIC = frozenset({"+", "-", "*", "/"})
 INTEGER_ONLY = frozenset({"DIV", "MOD"})
+BOOL = Elementary("BOOL")
+INT_LOW, INT_HIGH = RANGES["INT"]
 TIMES = ("TIME", "S5TIME", "DATE", "TIME_OF_DAY", "DATE_AND_TIME")
 # (op, left, right) → result, for the time types (seeds-003b §2.8)
 TIME_ARITHMETIC = {
@@ -73,16 +77,31 @@ def unary(ctx: Context, node: ast.Unary) -> Type:
 def binary(ctx: Context, node: ast.Binary) -> Type:
     left = ctx.type_of(node.left)
     right = ctx.type_of(node.right)
-    if left is ERROR or right is ERROR:
+    found: Type | None
+    a, b = _plain(left), _plain(right)
+    if a is not None and b is not None and not (type(left) is type(right) is IntConst):
+        found = _combined(node.op, a, b)  # the common case, in short
+    elif left is ERROR or right is ERROR:
         return ERROR
-    if is_silent(left) or is_silent(right):
-        return Elementary("BOOL") if node.op in COMPARE else ANYTHING
-    found = _result(node.op, left, right)
+    elif is_silent(left) or is_silent(right):
+        return BOOL if node.op in COMPARE else ANYTHING
+    else:
+        found = _result(node.op, left, right)
     if found is None:
         return ctx.report(
             "SCL211", node.loc, op=node.op, left=describe(left), right=describe(right)
         )
     return found
+
+
+def _plain(value: Type) -> str | None:
+    """The type name of a value of a known elementary type or of an integer constant (what
+    ``scalar`` says of them); None for any other value."""
+    if type(value) is Elementary:
+        return value.name if value.name != "UNKNOWN" else None
+    if type(value) is IntConst:
+        return "INT" if INT_LOW <= value.value <= INT_HIGH else "DINT"
+    return None
 
 
 def _result(op: str, left: Type, right: Type) -> Type | None:
@@ -93,6 +112,11 @@ def _result(op: str, left: Type, right: Type) -> Type | None:
         folded = _fold(op, left.value, right.value)
         if folded is not None:
             return folded
+    return _combined(op, a, b)
+
+
+@cache  # the result depends on the operator and the two type names only: computed once each
+def _combined(op: str, a: str, b: str) -> Elementary | None:
     common = wider(a, b)
     if op in LOGIC:
         return Elementary(common) if common in BITS else None
@@ -102,7 +126,7 @@ def _result(op: str, left: Type, right: Type) -> Type | None:
         )
         if not comparable and {a, b} == {"TIME", "S5TIME"}:
             comparable = True
-        return Elementary("BOOL") if comparable else None
+        return BOOL if comparable else None
     if op == "**":
         return Elementary("REAL") if a in NUMBERS and b in NUMBERS else None
     if op in INTEGER_ONLY:

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 from nasaq.ir import BlockKind
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import UNKNOWN, VOID
-from nasaq.lang.scl.typecheck.walk import calls, statements
+from nasaq.lang.scl.typecheck.walk import statements
 
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
@@ -23,7 +23,7 @@ def check(ctx: Context) -> None:
         return
     code = block.node.code
     targets = [stmt.target for stmt in statements(code) if isinstance(stmt, ast.Assign)]
-    targets += [arg.value for call in calls(code) for arg in call.args if arg.name]
+    targets += [arg.value for call in ctx.outline.calls for arg in call.args if arg.name]
     if not any(_is_function_value(ctx, target) for target in targets):
         ctx.report("SCL242", block.node.end, block=block.label, name=block.node.name.text)
 

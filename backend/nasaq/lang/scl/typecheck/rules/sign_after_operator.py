@@ -8,7 +8,6 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nasaq.lang.scl import ast
-from nasaq.lang.scl.typecheck.walk import expressions, nested
 
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
@@ -17,16 +16,8 @@ NUMBERS = ("INTEGER", "REAL")
 
 
 def check(ctx: Context, stmt: ast.Stmt) -> None:
-    for expression in expressions(stmt):
-        for node in nested(expression):
-            if not isinstance(node, ast.Binary):
-                continue
-            first = node.right
-            while isinstance(first, ast.Binary):  # A + -B * C: the sign still follows the +
-                first = first.left
-            if not isinstance(first, ast.Unary) or first.op not in ("-", "+"):
-                continue
-            operand = first.operand
-            if isinstance(operand, ast.Literal) and operand.kind in NUMBERS:
-                continue
-            ctx.report("SCL246", first.loc, op=node.op, operand=ctx.text(first))
+    for node, sign in ctx.outline.signs.get(id(stmt), ()):
+        operand = sign.operand
+        if isinstance(operand, ast.Literal) and operand.kind in NUMBERS:
+            continue
+        ctx.report("SCL246", sign.loc, op=node.op, operand=ctx.text(sign))

@@ -48,9 +48,9 @@ def _undeclared(ctx: Context, node: ast.Name | ast.Local | ast.Symbol, shown: st
 
 
 def _local(ctx: Context, text: str) -> Type | None:
-    variable = ctx.variable(text)
-    if variable is not None:
-        return ctx.declared(variable.type)
+    found = ctx.variable_type(text)
+    if found is not None:
+        return found
     constant = ctx.constant(text)
     if constant is not None:
         return ctx.type_of(constant.node)
