@@ -5,7 +5,9 @@ reads and writes the actual operand (constants get a fresh scratch copy per call
 counter and block parameters are ``(None, number, 0)``. An FB call opens the instance DB as DI,
 sets AR2 to P#DBX 0.0 (multi-instance: AR2 plus the instance offset), copies IN and IN_OUT into
 the instance before and OUT and IN_OUT out of it after the call, as STEP 7's CALL macro does; a
-structured IN_OUT (STRING, ARRAY, STRUCT, UDT, DT) is a DB pointer to the actual instead.
+structured IN_OUT (STRING, ARRAY, STRUCT, UDT, DT) is a DB pointer to the actual instead. A
+STRING input or output is copied as an assignment copies it: the characters that fit and their
+number, never the target's maximum length.
 As with the block stack of a real CPU, the DB and DI registers are restored when the callee
 returns, except that ``CALL FB n, DB m`` leaves them as STEP 7's macro does (DB = DB m, DI as
 before; the callee starts with DB = the caller's DI). AR2 is restored after FB calls and after
@@ -13,7 +15,8 @@ every CALL made from an FB (STEP 7's CALL macro keeps the caller's instance base
 FC parameters of ARRAY, STRUCT, UDT, STRING, DATE_AND_TIME or POINTER type also get a 6-byte DB
 pointer in the caller's local data (the callee's V area), which ``L P##param`` points to.
 The IEC counters and timers (SFB 0-5, ``nasaq.cpu.iec_blocks``) are FBs whose body is Python:
-their calls go through the same instance and parameter handling.
+their calls go through the same instance and parameter handling; so are the IEC library FCs
+(CONCAT, I_STRNG, AD_DT_TM ..., ``nasaq.cpu.iec_library``, loaded as FCs of the program).
 """
 
 from __future__ import annotations
@@ -107,6 +110,17 @@ def constant_bytes(constant: Constant, size: int) -> bytes:
     maximum = max(0, min(size - 2, 254)) if size >= 2 else len(chars)
     chars = chars[:maximum]
     return bytes((maximum, len(chars))) + chars + bytes(max(0, maximum - len(chars)))
+
+
+def _copy_string(source: bytearray, start: int, target: bytearray, at: int) -> None:
+    """An FB's STRING input or output copied in or out: ``min(current length of the source,
+    maximum length of the target)`` characters and that length; the target's byte 0 (its
+    maximum length) stays."""
+    if not (0 <= start <= len(source) - 2 and 0 <= at <= len(target) - 2):
+        raise CpuError("SIM503", address=f"byte {start} of a STRING parameter")
+    count = min(source[start + 1], target[at], len(source) - start - 2, len(target) - at - 2)
+    target[at + 1] = count
+    target[at + 2 : at + 2 + count] = source[start + 2 : start + 2 + count]
 
 
 def passed_as_db_pointer(var: Variable) -> bool:
@@ -694,7 +708,13 @@ class Calls:
             src_buf, src_byte, src_bit = self.locate(
                 actual, frame, vframe, params, site.caller_slots
             )
-        if width == 0:  # STRUCT, ARRAY, STRING ...: copy the bytes
+        if width == 0 and var.type[:6].upper() == "STRING":  # as an SCL assignment
+            if into_instance:
+                _copy_string(src_buf, src_byte, buf, byte)
+            else:
+                _copy_string(buf, byte, src_buf, src_byte)
+            return
+        if width == 0:  # STRUCT, ARRAY ...: copy the bytes
             count = (var.size_bits + 7) // 8
             if into_instance:
                 data = src_buf[src_byte : src_byte + count]

@@ -11,7 +11,7 @@ import math
 from collections.abc import Callable
 from typing import Any
 
-from nasaq.cpu import conversions, realnum
+from nasaq.cpu import conversions, iec_library, realnum
 from nasaq.cpu.calls import Calls
 from nasaq.cpu.codegen.bit_logic import paren_close
 from nasaq.cpu.codegen.compiler import Compiled, compile_block
@@ -101,9 +101,11 @@ class Loader:
         block = self.program.get(kind, number)
         compiled = None
         if block is not None and kind in CODE_KINDS:
-            compiled = compile_block(block, self.program, self.profile, self.bind)
-            self._link(compiled)
-            self.by_filename[compiled.filename] = compiled
+            compiled = iec_library.compiled(block)  # an IEC library FC: its body is Python
+            if compiled is None:
+                compiled = compile_block(block, self.program, self.profile, self.bind)
+                self._link(compiled)
+                self.by_filename[compiled.filename] = compiled
         self.cache[key] = compiled
         return compiled
 

@@ -22,6 +22,7 @@ from nasaq.lang.stl.bind import BlockInfo, ProgramIndex
 from nasaq.lang.stl.calls import AutoInstance
 from nasaq.lang.stl.dbdata import DataBuilder
 from nasaq.lang.stl.diag import problem, sort_key
+from nasaq.lang.stl.library import LIBRARY_FILE, add_library_blocks
 from nasaq.lang.stl.lower import CodeLowerer, LoweredCode, apply_code
 from nasaq.lang.stl.mnemonics import detect
 from nasaq.lang.stl.parse import ParseResult, parse_source
@@ -228,7 +229,19 @@ class _Compiler:
             self.program.symbols = {
                 symbol.name: symbol.address for symbol in self.symbols.symbols.values()
             }
+        registered += self.library_blocks(registered)
         return registered
+
+    def library_blocks(
+        self, registered: list[tuple[BlockInfo, _File]]
+    ) -> list[tuple[BlockInfo, _File]]:
+        """The IEC library FCs the program calls and does not define (``stl.library``)."""
+        added = add_library_blocks(self.index, self.symbols, (info.node for info, _ in registered))
+        if not added:
+            return []
+        file = _File(LIBRARY_FILE, ParseResult(ast.SourceNode(LIBRARY_FILE, [], [])), [])
+        self.program.symbols = {s.name: s.address for s in self.symbols.symbols.values()}
+        return [(info, file) for info in added]
 
     def build(self, registered: list[tuple[BlockInfo, _File]]) -> None:
         for info, file in registered:

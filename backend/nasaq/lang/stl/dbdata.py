@@ -19,6 +19,8 @@ from nasaq.lang.stl.build import unquote_chars
 from nasaq.lang.stl.diag import problem
 from nasaq.lang.types import ArrayType, DataType, Elementary, Field, StringType, type_text
 
+_DT = Elementary("DATE_AND_TIME")
+_DT_DEFAULT = bytes((0x90, 0x01, 0x01, 0, 0, 0, 0, 0x02))
 _FITS = {
     "BYTE": {ConstType.BYTE, ConstType.CHAR, ConstType.INT},
     "CHAR": {ConstType.CHAR, ConstType.BYTE},
@@ -149,9 +151,14 @@ class DataBuilder:
         for slot in slots:
             if isinstance(slot.type, StringType):
                 self.data[slot.offset_bits // 8] = slot.type.length
+            elif slot.type == _DT:  # STEP 7's default: DT#1990-01-01-00:00:00.000, a Monday
+                start = slot.offset_bits // 8
+                self.data[start : start + 8] = _DT_DEFAULT
             if slot.members:
                 self.defaults(slot.members)
-            if isinstance(slot.type, ArrayType) and not isinstance(slot.type.element, Elementary):
+            if isinstance(slot.type, ArrayType) and (
+                not isinstance(slot.type.element, Elementary) or slot.type.element == _DT
+            ):
                 # STRING headers, and the declared initial values inside each STRUCT/UDT element
                 for element in self._elements(slot, expand=True):
                     self.defaults([element])

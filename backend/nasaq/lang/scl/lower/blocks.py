@@ -106,6 +106,7 @@ def _code(lowerer: Statements, block: SclBlock) -> None:
     em.loc = node.loc
     lowerer.end_label = em.new_label()
     lowerer.statements(node.code)
+    lowerer.text_prologue()  # STRING temporaries get their maximum length first
     if lowerer.ok is not None:  # the code names OK or ENO: OK := TRUE first
         em.loc = node.loc
         start = [stl.InstrNode("SET", [], None, node.loc)]

@@ -167,7 +167,7 @@ class Calls(Expressions):
                         found[part.name.casefold()] = (section, part.type, part.name)
         return found
 
-    def user_call(self, node: ast.Call, result: Temp | None) -> None:
+    def user_call(self, node: ast.Call, result: Temp | stl.OperandNode | None) -> None:
         em = self.em
         target, formals, returns = self.target(node)
         enable: ast.Expr | None = None
@@ -207,7 +207,8 @@ class Calls(Expressions):
         if returns is not None and returns != Elementary("VOID") and result is None:
             dropped = result = em.temp(returns)  # a function called as a statement
         if result is not None and returns is not None:
-            args.append(em.arg("RET_VAL", em.ref(result)))
+            value = em.ref(result) if isinstance(result, Temp) else result  # or the target
+            args.append(em.arg("RET_VAL", value))
         skip = done = ""
         if enable is not None:
             self.condition(enable)

@@ -74,6 +74,15 @@ class Expressions(Base):
                 target = "REAL"
             em.load_text(*stl_constant(value, target))
             return
+        kind = type(node)
+        if kind is ast.Name or kind is ast.Local:  # the commonest operand, straight
+            assert isinstance(node, ast.Name | ast.Local)
+            variable = self.ctx.variable(node.name)
+            have = scalar(variable.type) if variable is not None else None
+            if variable is not None and have is not None and have != "BOOL":
+                em.op("L", stl.SymbolNode(variable.name, True, [], node.loc))
+                self.convert(have, want)
+                return
         have = self.scalar_of(node)
         if have == "BOOL":
             self.bool_value(node)

@@ -10,9 +10,11 @@ IDENT for TRUE/FALSE).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
 
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import SclBlock, SclIndex
+from nasaq.lang.stl.build import unquote_chars
 
 _INT_PREFIXES = {
     "INT",
@@ -93,6 +95,7 @@ def evaluate(node: ast.Expr, index: SclIndex | None, block: SclBlock | None) -> 
     return None
 
 
+@cache  # the same literals come back again and again (``Value`` is frozen)
 def _literal(kind: str, text: str) -> Value | None:
     try:
         return _parse(kind, text)
@@ -118,6 +121,9 @@ def _parse(kind: str, text: str) -> Value | None:
         for part in body.strip("()").split(","):
             number = number << 8 | int(part.strip())
         return Value("int", number)
+    if upper in _INT_PREFIXES and body.startswith("'"):
+        chars = unquote_chars(body)  # BYTE#'a': the character's code
+        return Value("int", ord(chars)) if len(chars) == 1 else None
     if upper in _INT_PREFIXES:
         return _literal("INTEGER" if "#" not in body else "TYPED", body)
     if upper == "REAL":
@@ -125,6 +131,8 @@ def _parse(kind: str, text: str) -> Value | None:
     if upper == "BOOL":
         inner = body.upper()
         return Value("int", 1 if inner in ("TRUE", "1") else 0)
+    if upper == "CHAR" and body.replace("_", "").isdigit():
+        return Value("int", int(body.replace("_", "")))  # CHAR#49: the character of code 49
     if upper == "CHAR":
         return Value("chars", text=body)
     if upper == "C":
@@ -134,6 +142,16 @@ def _parse(kind: str, text: str) -> Value | None:
     return None
 
 
+def dt_body(text: str) -> str:
+    """``95-1-1-12:00`` → ``1995-1-1-12:00``: a DATE_AND_TIME's two-digit year 90-99 is 19xx,
+    00-89 is 20xx (STL's ``DT#`` takes four digits)."""
+    year, _, rest = text.partition("-")
+    if len(year) <= 2 and year.isdigit():
+        number = int(year)
+        year = str(1900 + number if number >= 90 else 2000 + number)
+    return f"{year}-{rest}"
+
+
 def stl_constant(value: Value, want: str) -> tuple[str, str]:
     """``value`` written as an STL constant of type ``want`` (an elementary type name)."""
     if value.kind == "chars":
@@ -141,6 +159,8 @@ def stl_constant(value: Value, want: str) -> tuple[str, str]:
     if value.kind in _STL_PREFIX:
         if want == "S5TIME" and value.kind == "TIME":
             return "TYPED", "S5T#" + value.text
+        if value.kind == "DATE_AND_TIME":
+            return "TYPED", "DT#" + dt_body(value.text)
         return "TYPED", _STL_PREFIX[value.kind] + value.text
     if want == "REAL" or value.kind == "real":
         return "REAL", _real_text(float(value.number))

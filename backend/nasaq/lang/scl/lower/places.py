@@ -83,6 +83,7 @@ class Base:
         self.diagnostics: list[Diagnostic] = []
         self.hoisted: dict[int, Temp] = {}  # id(call) -> the temporary that holds its value
         self.constants: dict[int, tuple[ast.Expr, Value | None]] = {}  # id -> (node, value)
+        self.references: dict[str, Slot] | None = None  # an FB's by-reference slots by name
         self.loops: list[tuple[str, str]] = []  # (continue label, exit label), innermost last
         self.user_labels: dict[str, str] = {}
         self.ok: Temp | None = None  # the OK flag, when the block uses OK or ENO
@@ -135,13 +136,37 @@ class Base:
         known = self.constants.get(id(node))
         if known is not None:
             return known[1]
-        found = None
-        if isinstance(node, ast.Literal | ast.Unary | ast.Paren | ast.Name | ast.Local) or (
-            isinstance(node, ast.Binary) and node.op in _FOLDED
-        ):
-            found = evaluate(node, self.index, self.block)
+        found = self.fold(node)
         self.constants[id(node)] = (node, found)  # the node is kept, so its id stays its own
         return found
+
+    def fold(self, node: ast.Expr) -> Value | None:
+        """``evaluate`` where the parts are constants (known from ``constant``), so a long
+        expression is not walked again at each of its levels."""
+        kind = type(node)
+        if kind is ast.Literal:
+            return evaluate(node, self.index, self.block)
+        if kind is ast.Paren:
+            assert isinstance(node, ast.Paren)
+            return self.constant(node.inner)
+        if kind is ast.Name or kind is ast.Local:
+            assert isinstance(node, ast.Name | ast.Local)
+            if node.name.casefold() not in self.block.constants:
+                return None
+            return evaluate(node, self.index, self.block)
+        if kind is ast.Unary:
+            assert isinstance(node, ast.Unary)
+            if self.constant(node.operand) is None:
+                return None
+            return evaluate(node, self.index, self.block)
+        if kind is ast.Binary:
+            assert isinstance(node, ast.Binary)
+            if node.op not in _FOLDED or self.constant(node.left) is None:
+                return None
+            if self.constant(node.right) is None:
+                return None
+            return evaluate(node, self.index, self.block)  # constant folding, as S7-SCL does
+        return None
 
     def report(self, code: str, loc: ast.Loc, **params: object) -> None:
         self.diagnostics.append(problem(code, self.block.file, loc, **params))
@@ -262,10 +287,10 @@ class Base:
         """The instance slot of an FB's structured IN_OUT, which holds a DB pointer."""
         if self.block.kind is not BlockKind.FB:
             return None
-        slots, _ = self.index.instance_layout(self.block)
-        wanted = name.upper()
-        found = next((slot for slot in slots if slot.name.upper() == wanted), None)
-        return found if found is not None and found.by_reference else None
+        if self.references is None:  # asked at every access: the slots by name, once
+            slots, _ = self.index.instance_layout(self.block)
+            self.references = {slot.name.upper(): slot for slot in slots if slot.by_reference}
+        return self.references.get(name.upper())
 
     def plain(self, access: Access) -> bool:
         """Whether ``operand`` gives this access without set-up code (nothing in between the

@@ -12,7 +12,7 @@ from copy import copy
 
 from nasaq.lang.layout import Slot
 from nasaq.lang.scl import ast
-from nasaq.lang.scl.lower.functions import Functions
+from nasaq.lang.scl.lower.dates import Dates
 from nasaq.lang.scl.lower.literals import Value, stl_constant
 from nasaq.lang.scl.lower.places import Access, LoweringError, Selector
 from nasaq.lang.scl.typecheck.types import scalar
@@ -23,7 +23,7 @@ _ZERO = Value("int", 0)
 _ONE = Value("int", 1)
 
 
-class Statements(Functions):
+class Statements(Dates):
     def statements(self, body: list[ast.Stmt]) -> None:
         for stmt in body:
             self.statement(stmt)
@@ -40,7 +40,10 @@ class Statements(Functions):
         em = self.em
         target = self.type_of(stmt.target)
         kind = scalar(target)
-        if isinstance(target, StructType | ArrayType | BlockType | StringType):
+        if isinstance(target, StringType) or kind == "DATE_AND_TIME":
+            self.assign_text(stmt)  # ``strings``, ``dates``
+            return
+        if isinstance(target, StructType | ArrayType | BlockType):
             self.copy(stmt)
             return
         if kind == "BOOL":
@@ -83,8 +86,12 @@ class Statements(Functions):
             raise LoweringError(stmt.loc, "STRING assignments")
         root = self.index.layout.place([Field("x", data_type)])[0]
         for path, slot in self.leaves(root, []):
-            if isinstance(slot.type, StringType) or not isinstance(slot.type, Elementary):
-                raise LoweringError(stmt.loc, "copying a structure that holds STRINGs")
+            if isinstance(slot.type, StringType) or slot.type == Elementary("DATE_AND_TIME"):
+                parts = (_extend(source, path), slot.type, _extend(target, path), slot.type)
+                self.copy_places(*parts, stmt.loc)  # ``strings``, ``dates``
+                continue
+            if not isinstance(slot.type, Elementary):
+                raise LoweringError(stmt.loc, "copying this structure")
             left = self.operand(_extend(target, path), stmt.loc)
             right = self.operand(_extend(source, path), stmt.loc)
             if slot.type.name in _SIMPLE_COPY:

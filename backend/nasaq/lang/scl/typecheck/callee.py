@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 
 from nasaq.ir import BlockKind
 from nasaq.lang.scl import ast
+from nasaq.lang.scl.typecheck import library
 from nasaq.lang.scl.typecheck.instances import INSTANCE_KINDS, block_id, exists
 from nasaq.lang.scl.typecheck.rules.calls import STANDARD
 from nasaq.lang.scl.typecheck.signatures import S5_FUNCTIONS, Signature, of_block, of_instance
@@ -38,7 +39,7 @@ def resolve(ctx: Context, node: ast.Call) -> Signature | None:
     if isinstance(callee, ast.Name) and ctx.variable(callee.name) is None:
         upper = callee.name.upper()
         if upper in STANDARD and ctx.index.named(callee.name) is None:
-            return S5_FUNCTIONS.get(upper)
+            return S5_FUNCTIONS.get(upper) or library.signature(upper)
     if not isinstance(callee, ast.Local) and ctx.variable(_text(callee)) is None:
         named = block_id(ctx.index, ctx.block, callee)
         if named is not None and named[0] is not BlockKind.DB:

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 
 from nasaq.ir import BlockKind
 from nasaq.lang.scl import ast
+from nasaq.lang.scl.typecheck import library
 from nasaq.lang.scl.typecheck.operands import function_value
 from nasaq.lang.scl.typecheck.signatures import S5_FUNCTIONS
 from nasaq.lang.scl.typecheck.types import (
@@ -53,6 +54,7 @@ STANDARD = (
     | SAME_AS_INPUT
     | UNTYPED
     | CONVERSIONS
+    | library.NAMES
 )
 
 
@@ -90,6 +92,9 @@ def _standard(name: str, node: ast.Call, values: list[Type]) -> Type:
         return Elementary(FIXED_RESULTS[name])
     if name in S5_FUNCTIONS:
         return S5_FUNCTIONS[name].result or ANYTHING
+    if name in library.NAMES:
+        found = library.signature(name)
+        return found.result if found is not None and found.result is not None else ANYTHING
     if name in STRING_RESULTS:
         return StringType(254)
     if name in SAME_AS_INPUT and values:
