@@ -62,7 +62,16 @@ class Expressions(Base):
         while isinstance(node, ast.Paren):
             node = node.inner
         em = self.em
-        if id(node) in self.hoisted:
+        kind = type(node)
+        if kind is ast.Name or kind is ast.Local:  # the commonest operand, straight
+            assert isinstance(node, ast.Name | ast.Local)
+            variable = self.ctx.variable(node.name)  # (a CONST is no variable)
+            have = scalar(variable.type) if variable is not None else None
+            if variable is not None and have is not None and have != "BOOL":
+                em.op("L", stl.SymbolNode(variable.name, True, [], node.loc))
+                self.convert(have, want)
+                return
+        elif id(node) in self.hoisted:
             temp = self.hoisted[id(node)]
             em.op("L", em.ref(temp))
             self.convert(scalar(temp.type) or want, want)
@@ -74,15 +83,6 @@ class Expressions(Base):
                 target = "REAL"
             em.load_text(*stl_constant(value, target))
             return
-        kind = type(node)
-        if kind is ast.Name or kind is ast.Local:  # the commonest operand, straight
-            assert isinstance(node, ast.Name | ast.Local)
-            variable = self.ctx.variable(node.name)
-            have = scalar(variable.type) if variable is not None else None
-            if variable is not None and have is not None and have != "BOOL":
-                em.op("L", stl.SymbolNode(variable.name, True, [], node.loc))
-                self.convert(have, want)
-                return
         have = self.scalar_of(node)
         if have == "BOOL":
             self.bool_value(node)
@@ -337,13 +337,23 @@ class Expressions(Base):
     # ---- hoisting ---------------------------------------------------------------------------
 
     def hoist(self, node: ast.Expr) -> None:
-        """Computes into temporaries what a logic string cannot contain (see the module doc)."""
+        """Computes into temporaries what a logic string cannot contain (see the module doc):
+        calls, and the operations S7-SCL computes by calling a library FC."""
+        kind = type(node)
+        if kind is ast.Name or kind is ast.Local or kind is ast.Literal:
+            return
         for child in _children(node):
             self.hoist(child)
         if id(node) in self.hoisted:
             return
-        if isinstance(node, ast.Call):
+        if kind is ast.Call:
+            assert isinstance(node, ast.Call)
             self.hoisted[id(node)] = self.call_result(node)
+        elif kind is ast.Binary:
+            assert isinstance(node, ast.Binary)
+            name = self.library_operation(node)
+            if name is not None:
+                self.hoisted[id(node)] = self.library_result(node, name)
 
     def drop_hoisted(self) -> None:
         for temp in self.hoisted.values():
@@ -356,6 +366,14 @@ class Expressions(Base):
         raise NotImplementedError
 
     def call_result(self, node: ast.Call) -> Temp:  # pragma: no cover - overridden
+        raise NotImplementedError
+
+    # ---- provided by the STRING and DATE_AND_TIME parts -------------------------------------
+
+    def library_operation(self, node: ast.Expr) -> str | None:  # pragma: no cover - overridden
+        raise NotImplementedError
+
+    def library_result(self, node: ast.Binary, name: str) -> Temp:  # pragma: no cover
         raise NotImplementedError
 
 

@@ -178,13 +178,11 @@ class Statements(Dates):
 
     def do_case(self, stmt: ast.Case) -> None:
         em = self.em
-        selector = em.temp(Elementary("INT"))
         kind = scalar(self.type_of(stmt.selector)) or "INT"
         kind = "DINT" if kind in ("DINT", "DWORD") else "INT"
         suffix = "I" if kind == "INT" else "D"
         self.load_value(stmt.selector, kind)
-        if kind == "DINT":
-            selector = em.temp(Elementary("DINT"))
+        selector = em.temp(Elementary(kind))
         em.op("T", em.ref(selector))
         targets: list[str] = []
         for branch in stmt.branches:

@@ -320,13 +320,6 @@ class Strings(References):
         self.library_call(name, [node.left, node.right], temp)
         return temp
 
-    def hoist(self, node: ast.Expr) -> None:
-        super().hoist(node)
-        if id(node) not in self.hoisted and isinstance(node, ast.Binary):
-            name = self.library_operation(node)
-            if name is not None:
-                self.hoisted[id(node)] = self.library_result(node, name)
-
     def compare(self, node: ast.Binary) -> None:
         if id(node) in self.hoisted:
             self.em.op("A", self.em.ref(self.hoisted[id(node)]))
