@@ -157,6 +157,32 @@ CASES: list[tuple[str, list[tuple[str, int, int]]]] = [
     ("Motor.DB5(text := s, buffer := buf); k := DB5.running;", [("SCL214", L, 45)]),
     ("Motor.DB5(text := s, buffer := buf); k := DB5.nothing;", [("SCL222", L, 49)]),
     ("k := MotorSym.running;", [("SCL214", L, 8)]),
+    # an FB call is a statement: it has no value to use in an expression
+    (
+        "m(text := s, buffer := buf); x := m.running AND t.Q;"
+        " k := Square(2) + Calc(a := 1, b := 2.0, ok => x);",
+        [],
+    ),
+    ("x := m(text := s, buffer := buf);", [("SCL251", L, 8)]),
+    ("IF m(text := s, buffer := buf) THEN k := 1; END_IF;", [("SCL251", L, 6)]),
+    ("x := t(IN := x, PT := T#1s) OR x;", [("SCL251", L, 8)]),
+    ("k := Motor.MotorData(text := s, buffer := buf) + 1;", [("SCL251", L, 8)]),
+    ("x := MotorData(text := s, buffer := buf);", [("SCL251", L, 8)]),
+    ("x := SFB4.DB8(IN := x, PT := tm);", [("SCL251", L, 8)]),
+    ("x := Pump.PumpData();", [("SCL251", L, 8)]),
+    ("k := Square(v := m(text := s, buffer := buf));", [("SCL251", L, 20)]),
+    ("x := m(speed := w, text := s, buffer := buf);", [("SCL251", L, 8), ("SCL213", L, 19)]),
+    ("x := Motor(text := s, buffer := buf);", [("SCL230", L, 8)]),
+    ("x := Motor.Values(text := s, buffer := buf);", [("SCL233", L, 14)]),
+    # outputs and in/outs write the FOR variable (a warning); inputs only read it
+    ("FOR k := 1 TO 3 DO m(speed := k, text := s, buffer := buf); d := Square(k); END_FOR;", []),
+    ("FOR k := 1 TO 3 DO Swap(x := k, y := buf[k]); END_FOR;", [("SCL250", L, 32)]),
+    (
+        "FOR k := 1 TO 3 DO cnt(CU := x, CV => k);"
+        " m(text := s, buffer := buf, count := #k); END_FOR;",
+        [("SCL250", L, 41), ("SCL250", L, 82)],
+    ),
+    ("FOR k := 1 TO 3 DO m(start => k, text := s, buffer := buf); END_FOR;", [("SCL224", L, 24)]),
     # an unknown name is reported once, and the call is not checked further
     ("m(start := zz, text := s, buffer := buf);", [("SCL201", L, 14)]),
     ("zz(a := 1);", [("SCL201", L, 3)]),
@@ -190,6 +216,18 @@ def test_call_messages_name_the_parameter_and_the_block() -> None:
         "The call of FC 1 must supply b, ok.",
         "FB 1 is a function block: call it with an instance (FB.DB(...), an instance DB or a "
         "multi-instance).",
+    ]
+
+
+def test_an_fb_call_in_an_expression_names_the_block() -> None:
+    body = "x := t(IN := x, PT := T#1s); x := Motor.DB5(text := s, buffer := buf);"
+    parsed = parse_source("calls.scl", HEAD + "  " + body + TAIL)
+    _index, diagnostics = check_sources([parsed.source], _symbols())
+    tail = "which returns no value: call it as a statement of its own and read its outputs"
+    tail += " afterwards."
+    assert [item.message for item in diagnostics] == [
+        f"t calls the function block TON, {tail}",
+        f"Motor.DB5 calls the function block FB 1, {tail}",
     ]
 
 

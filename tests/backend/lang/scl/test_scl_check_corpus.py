@@ -17,7 +17,7 @@ MODULES = (
     "test_scl_declaration_checks",
 )
 # The codes of the type checker (the binder's are tested in test_scl_bind.py).
-CHECKER_CODES = {"SCL201", "SCL206"} | {f"SCL{number}" for number in range(211, 248)}
+CHECKER_CODES = {"SCL201", "SCL206"} | {f"SCL{number}" for number in range(211, 253)}
 
 Expected = list[tuple[str, int, int]]
 

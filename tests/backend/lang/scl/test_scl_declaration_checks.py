@@ -1,6 +1,7 @@
 """The SCL rules for initial values in declarations and for the assignment section of DATA_BLOCKs
 (``initial_values``, ``db_values``), as snapshots of (code, line, column): range,
-convertibility, constants only, the number of array values, where initial values are allowed."""
+convertibility, constants only, the number of array values, where initial values are allowed;
+and where multi-instances may be declared (``temp_instances``)."""
 
 from __future__ import annotations
 
@@ -69,6 +70,28 @@ PROGRAMS_OF_BLOCKS: list[tuple[str, list[tuple[str, int, int]]]] = [
         "ORGANIZATION_BLOCK OB1\nVAR_TEMP t : INT := 0; END_VAR\nBEGIN\nEND_ORGANIZATION_BLOCK\n",
         [("SCL245", 2, 21)],
     ),
+    # multi-instances (FBs, IEC timers and counters) need static memory: VAR of an FB only
+    (
+        "FUNCTION_BLOCK M\nBEGIN\nEND_FUNCTION_BLOCK\nFUNCTION_BLOCK FB2\n"
+        "VAR m : M; t : TON; c : ARRAY[1..2] OF CTU; END_VAR\nVAR_TEMP k : INT; END_VAR\n"
+        "BEGIN\n  m(); t(IN := TRUE, PT := T#1s);\nEND_FUNCTION_BLOCK\n",
+        [],
+    ),
+    (
+        "FUNCTION_BLOCK FB1\nVAR_TEMP k : INT; t : TON; END_VAR\nBEGIN\n"
+        "  t(IN := TRUE, PT := T#1s);\nEND_FUNCTION_BLOCK\n",
+        [("SCL252", 2, 19)],
+    ),
+    (
+        "FUNCTION_BLOCK M\nBEGIN\nEND_FUNCTION_BLOCK\nFUNCTION F : VOID\n"
+        "VAR m : M; n : INT; c : ARRAY[1..2] OF CTU; END_VAR\nBEGIN\nEND_FUNCTION\n",
+        [("SCL252", 5, 5), ("SCL252", 5, 21)],
+    ),
+    (
+        "ORGANIZATION_BLOCK OB1\nVAR_TEMP s : STRUCT t : TP; END_STRUCT; END_VAR\nBEGIN\n"
+        "END_ORGANIZATION_BLOCK\n",
+        [("SCL252", 2, 10)],
+    ),
     # UDTs and DBs
     ("TYPE U\nSTRUCT a : INT := 1; b : STRING[2] := 'ab'; END_STRUCT\nEND_TYPE\n", []),
     ("TYPE U\nSTRUCT a : INT := 1.5; END_STRUCT\nEND_TYPE\n", [("SCL213", 2, 19)]),
@@ -111,6 +134,7 @@ DB_VALUES: list[tuple[str, list[tuple[str, int, int]]]] = [
     ("rec.y := 1;", [("SCL222", D, 7)]),
     ("v := v;", [("SCL243", D, 8)]),
     ("arr[1, 2] := 1;", [("SCL216", D, 3)]),
+    ("arr[4] := 1; m[2, 0] := W#16#1;", [("SCL249", D, 7), ("SCL249", D, 21)]),
 ]
 
 DB_BLOCKS: list[tuple[str, list[tuple[str, int, int]]]] = [
@@ -157,6 +181,23 @@ def test_instance_and_udt_db_values(text: str, expected: list[tuple[str, int, in
     shift = PREFIX.count("\n")
     assert _found(PREFIX + text) == [
         (code, line + shift, column) for code, line, column in expected
+    ]
+
+
+def test_temp_instance_message() -> None:
+    text = (
+        "FUNCTION_BLOCK Motor\nBEGIN\nEND_FUNCTION_BLOCK\n"
+        "FUNCTION F : VOID\nVAR t : TOF; m : Motor; END_VAR\nBEGIN\nEND_FUNCTION\n"
+    )
+    parsed = parse_source("decl.scl", text)
+    _index, diagnostics = check_sources([parsed.source])
+    tail = (
+        "needs static memory: declare it in the VAR section of a function block, not among the"
+        " temporary variables of FC 1."
+    )
+    assert [item.message for item in diagnostics] == [
+        f"t is an instance of TOF and {tail}",
+        f"m is an instance of Motor (FB 1) and {tail}",
     ]
 
 

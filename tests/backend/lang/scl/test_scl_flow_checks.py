@@ -1,6 +1,7 @@
-"""The SCL control-flow rules: CASE selector and labels, EXIT/CONTINUE outside loops, GOTO and
-jump labels, the FC return value, and the ``A * -B`` warning. Each rule has failing and passing
-snapshots of (code, line, column); one mistake gives one diagnostic."""
+"""The SCL control-flow rules: CASE selector, labels and ranges, EXIT/CONTINUE outside loops,
+GOTO and jump labels, the FC return value, and the warnings for the FOR variable written inside
+its loop and for ``A * -B``. Each rule has failing and passing snapshots of (code, line,
+column); one mistake gives one diagnostic."""
 
 from __future__ import annotations
 
@@ -34,6 +35,16 @@ CASES: list[tuple[str, list[tuple[str, int, int]]]] = [
     ("CASE k OF 40000: ; END_CASE;", [("SCL218", L, 13)]),
     ("CASE k OF T#1s: ; END_CASE;", [("SCL214", L, 13)]),
     ("CASE zz OF 1: ; 1: ; END_CASE;", [("SCL201", L, 8), ("SCL236", L, 19)]),
+    # a range runs upwards: a reversed one is empty, and overlaps nothing
+    ("CASE k OF 3..3: ; 4..16#10: ; END_CASE;", []),
+    ("CASE k OF 5..1: ; END_CASE;", [("SCL248", L, 13)]),
+    ("CASE k OF -1..-5: x := TRUE; END_CASE;", [("SCL248", L, 13)]),
+    ("CASE k OF 1..5: ; 9..6, 7: ; END_CASE;", [("SCL248", L, 21)]),
+    (
+        "CASE k OF 16#10..9: ; ELSE CASE k OF 2..1: ; END_CASE; END_CASE;",
+        [("SCL248", L, 13), ("SCL248", L, 40)],
+    ),
+    ("CASE k OF 9..T#1s: ; END_CASE;", [("SCL214", L, 16)]),
     # EXIT and CONTINUE inside a loop only; RETURN anywhere
     ("FOR k := 1 TO 5 DO IF x THEN EXIT; END_IF; CONTINUE; END_FOR;", []),
     ("WHILE x DO CASE k OF 1: EXIT; END_CASE; END_WHILE; REPEAT CONTINUE; UNTIL x END_REPEAT;", []),
@@ -54,6 +65,19 @@ CASES: list[tuple[str, list[tuple[str, int, int]]]] = [
     ("GOTO L2;", [("SCL240", L, 3)]),
     ("GOTO L3; WHILE x DO L3: ; END_WHILE;", [("SCL241", L, 3)]),
     ("FOR k := 1 TO 2 DO GOTO L3; END_FOR; WHILE x DO L3: ; END_WHILE;", [("SCL241", L, 22)]),
+    # the FOR variable is not written inside its own loop (a warning), nested statements too
+    ("FOR k := 1 TO 5 DO d := k; x := k > 2; END_FOR; k := 0; FOR k := 1 TO 2 DO ; END_FOR;", []),
+    ("FOR d := 1 TO 5 DO FOR k := 1 TO 2 DO d := d + k; END_FOR; END_FOR;", [("SCL250", L, 41)]),
+    ("FOR k := 1 TO 5 DO k := k + 1; END_FOR;", [("SCL250", L, 22)]),
+    ("FOR k := 1 TO 5 DO IF x THEN #k := 0; END_IF; END_FOR;", [("SCL250", L, 32)]),
+    ("FOR #k := 1 TO 5 DO CASE k OF 1: k := 9; END_CASE; END_FOR;", [("SCL250", L, 36)]),
+    (
+        "FOR k := 1 TO 5 DO WHILE x DO FOR k := 1 TO 2 DO ; END_FOR; END_WHILE; END_FOR;",
+        [("SCL250", L, 37)],
+    ),
+    ("FOR k := 1 TO 5 DO k := r; END_FOR;", [("SCL250", L, 22), ("SCL213", L, 27)]),
+    ("FOR r := 1 TO 5 DO r := 2.0; END_FOR;", [("SCL221", L, 7)]),
+    ("FOR zz := 1 TO 5 DO zz := 2; END_FOR;", [("SCL201", L, 7)]),
     # a sign right after a binary operator: a warning
     ("k := k * (-k); k := -k * 2; k := k * -5; x := x AND NOT x; r := -r;", []),
     ("k := k * -k;", [("SCL246", L, 12)]),
@@ -130,11 +154,22 @@ def test_sign_after_operator_is_a_warning() -> None:
     assert diagnostics[0].message == "-k follows the operator * directly: write * (-k)."
 
 
+def test_writing_the_for_variable_is_a_warning() -> None:
+    parsed = parse_source("flow.scl", HEAD + "  FOR k := 1 TO 5 DO k := 5; END_FOR;" + TAIL)
+    _index, diagnostics = check_sources([parsed.source])
+    assert [(item.code, item.severity) for item in diagnostics] == [("SCL250", Severity.WARNING)]
+    assert diagnostics[0].message == (
+        f"k is the control variable of the FOR loop in line {L}: changing it inside the loop"
+        " changes how often the loop runs."
+    )
+
+
 def test_flow_messages() -> None:
-    body = "CASE k OF 1: ; 1: ; END_CASE; GOTO L3; WHILE x DO L3: ; END_WHILE;"
+    body = "CASE k OF 1: ; 1: ; 16#10..-2: ; END_CASE; GOTO L3; WHILE x DO L3: ; END_WHILE;"
     parsed = parse_source("flow.scl", HEAD + "  " + body + TAIL)
     _index, diagnostics = check_sources([parsed.source])
     assert [item.message for item in diagnostics] == [
         f"The CASE value 1 occurs twice (first in line {L}).",
+        "The CASE range 16#10..-2 is empty: its first value must not be greater than its last.",
         "GOTO L3 jumps into a loop; a jump may only leave a loop.",
     ]

@@ -84,6 +84,19 @@ CASES = [
     ("k := k[1];", [("SCL217", 5, 8)]),
     ("k := a[r];", [("SCL213", 5, 10)]),
     ('x := I[k, 1] AND "Data".flags[k];', []),
+    # constant indices within the bounds of each dimension
+    ('k := a[5] + mx[3, 4] + a[k + 10] + a[2 * 3 - 5]; x := "Data".flags[0];', []),
+    ("k := a[6];", [("SCL249", 5, 10)]),
+    ("a[0] := 1;", [("SCL249", 5, 5)]),
+    ("k := a[6] + w;", [("SCL249", 5, 10)]),
+    ("k := mx[4, 0];", [("SCL249", 5, 11), ("SCL249", 5, 14)]),
+    ("mx[4] := row;", [("SCL249", 5, 6)]),
+    (
+        "k := a[2 * 3] + a[-1] + a[INT#7] + a[16#A];",
+        [("SCL249", 5, 10), ("SCL249", 5, 21), ("SCL249", 5, 29), ("SCL249", 5, 40)],
+    ),
+    ('x := "Data".flags[8];', [("SCL249", 5, 21)]),
+    ("k := a[1, 9];", [("SCL216", 5, 8)]),
     # members
     ("k := rec.zz;", [("SCL222", 5, 12)]),
     ('k := "Data".nothing;', [("SCL222", 5, 15)]),
@@ -115,8 +128,26 @@ CASES = [
     ),
 ]
 
+# Whole blocks: CONST names in indices and bounds, an array the lexer read as an area (m[4]).
+BLOCK_CASES: list[tuple[str, list[tuple[str, int, int]]]] = [
+    (
+        "FUNCTION_BLOCK FB1\nCONST N := 10; HALF := N DIV 2; END_CONST\n"
+        "VAR a : ARRAY[1..N] OF INT; m : ARRAY[0..3] OF INT; k : INT; END_VAR\nBEGIN\n"
+        "  a[N] := a[HALF] + m[3] + m[HALF - 2];\n"
+        "  a[N + 1] := 0;\n  k := a[HALF * 3];\n  k := m[4] + m[HALF - 6];\n"
+        "END_FUNCTION_BLOCK\n",
+        [("SCL249", 6, 5), ("SCL249", 7, 10), ("SCL249", 8, 10), ("SCL249", 8, 17)],
+    ),
+    (  # a variable hides the CONST of its name: its index is not constant
+        "FUNCTION_BLOCK FB1\nCONST N := 10; END_CONST\n"
+        "VAR a : ARRAY[1..3] OF INT; END_VAR\nVAR_TEMP n : INT; END_VAR\nBEGIN\n"
+        "  a[n] := 1;\nEND_FUNCTION_BLOCK\n",
+        [],
+    ),
+]
+
 # The complete programs, for the count of erroneous programs (test_scl_check_corpus.py).
-PROGRAMS = [(HEAD + "  " + body + TAIL, expected) for body, expected in CASES]
+PROGRAMS = [(HEAD + "  " + body + TAIL, expected) for body, expected in CASES] + BLOCK_CASES
 
 
 def _symbols() -> SymbolTable:
@@ -132,6 +163,23 @@ def test_rule_snapshot(body: str, expected: list[tuple[str, int, int]]) -> None:
     _index, diagnostics = check_sources([parsed.source], _symbols())
     found = [(item.code, item.span.line, item.span.column) for item in diagnostics if item.span]
     assert found == expected, [item.message for item in diagnostics]
+
+
+@pytest.mark.parametrize(("text", "expected"), BLOCK_CASES)
+def test_block_snapshot(text: str, expected: list[tuple[str, int, int]]) -> None:
+    parsed = parse_source("test.scl", text)
+    assert parsed.diagnostics == []
+    _index, diagnostics = check_sources([parsed.source])
+    found = [(item.code, item.span.line, item.span.column) for item in diagnostics if item.span]
+    assert found == expected, [item.message for item in diagnostics]
+
+
+def test_index_out_of_bounds_message() -> None:
+    parsed = parse_source("test.scl", HEAD + "  k := mx[2, 5];" + TAIL)
+    _index, diagnostics = check_sources([parsed.source])
+    assert [item.message for item in diagnostics] == [
+        "The index 5 is outside the bounds 1..4 of mx."
+    ]
 
 
 def test_messages_name_the_types_and_the_conversion() -> None:

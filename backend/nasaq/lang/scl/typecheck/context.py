@@ -35,6 +35,7 @@ class Context:
         self.diagnostics: list[Diagnostic] = []
         self._types: dict[int, Type] = {}
         self.reported: set[str] = set()  # mistakes reported once per block (undeclared names)
+        self.written_actuals: set[int] = set()  # actual parameters of outputs and in/outs (ids)
         self._db_members: dict[str, Variable] | None = None
         self._variable_types: dict[str, Type] = {}
         self._members_of: dict[DbRef | BlockType, dict[str, DataType] | None] = {}

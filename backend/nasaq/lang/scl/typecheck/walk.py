@@ -147,20 +147,26 @@ def calls(body: list[ast.Stmt]) -> list[ast.Call]:
 
 Loops = tuple[int, ...]  # the loops around a statement, outermost first (their ids)
 Signed = tuple[ast.Binary, ast.Unary]  # A * -B: the operation, the sign
+Counters = tuple[tuple[str, ast.For], ...]  # the FOR loops around, innermost first, by variable
 
 
 @dataclass(slots=True)
 class Outline:
     """What the rules look for in the code of a block, found in one walk: its calls (in source
-    order); by statement (id), the binary operations whose right operand begins with a sign
-    (``A * -B``, ``A + -B * C``) inside the expressions it holds directly, with that sign; and
-    the labels, GOTO, EXIT and CONTINUE statements with the loops around each."""
+    order) and, by id, those that are statements of their own; by statement (id), the binary
+    operations whose right operand begins with a sign (``A * -B``, ``A + -B * C``) inside the
+    expressions it holds directly, with that sign; the labels, GOTO, EXIT and CONTINUE
+    statements with the loops around each; and what may write the control variable of a FOR
+    loop around it (``counter_writes``: an assignment target, the variable of an inner FOR, or
+    an actual parameter, which writes only if it is an output or in/out), with that loop."""
 
     calls: list[ast.Call] = field(default_factory=list)
+    statement_calls: set[int] = field(default_factory=set)
     signs: dict[int, list[Signed]] = field(default_factory=dict)
     jumps: list[tuple[ast.Label | ast.Goto | ast.Exit | ast.Continue, Loops]] = field(
         default_factory=list
     )
+    counter_writes: list[tuple[ast.Expr | ast.Arg, ast.For]] = field(default_factory=list)
 
 
 JUMPS = (ast.Label, ast.Goto, ast.Exit, ast.Continue)
@@ -168,26 +174,67 @@ JUMPS = (ast.Label, ast.Goto, ast.Exit, ast.Continue)
 
 def outline(body: list[ast.Stmt]) -> Outline:
     found = Outline()
-    _outline(body, (), found)
+    _outline(body, (), (), found)
     return found
 
 
-def _outline(body: list[ast.Stmt], loops: Loops, found: Outline) -> None:
+def variable_key(node: ast.Expr) -> str | None:
+    """How a FOR control variable is matched with what is written: ``k`` and ``#k`` alike, a
+    ``"symbol"`` apart (it may be global); None for anything else (not followed)."""
+    if isinstance(node, ast.Name | ast.Local):
+        return node.name.casefold()
+    if isinstance(node, ast.Symbol):
+        return '"' + node.name.casefold()
+    return None
+
+
+def _outline(body: list[ast.Stmt], loops: Loops, counters: Counters, found: Outline) -> None:
     for stmt in body:
         parts = _EXPRESSIONS.get(type(stmt))
         if parts is not None:
             signs: list[Signed] = []
+            first_call = len(found.calls)
             for expression in parts(stmt):
                 _operations(expression, found.calls, signs)
             if signs:
                 found.signs[id(stmt)] = signs
+            if isinstance(stmt, ast.CallStmt):
+                found.statement_calls.add(id(stmt.call))
+            if counters:
+                _counter_writes(stmt, found.calls[first_call:], counters, found)
         elif isinstance(stmt, JUMPS):
             found.jumps.append((stmt, loops))
         inner = _BODIES.get(type(stmt))
         if inner is not None:
-            around = (*loops, id(stmt)) if isinstance(stmt, LOOPS) else loops
+            around, within = loops, counters
+            if isinstance(stmt, LOOPS):
+                around = (*loops, id(stmt))
+            if isinstance(stmt, ast.For):
+                key = variable_key(stmt.variable)
+                if key is not None:
+                    within = ((key, stmt), *counters)
             for nested_body in inner(stmt):
-                _outline(nested_body, around, found)
+                _outline(nested_body, around, within, found)
+
+
+def _counter_writes(
+    stmt: ast.Stmt, calls: list[ast.Call], counters: Counters, found: Outline
+) -> None:
+    """Notes what in ``stmt`` may write the variable of a FOR loop around it (the innermost
+    loop of that variable)."""
+    written: list[ast.Expr | ast.Arg] = [arg for call in calls for arg in call.args]
+    if isinstance(stmt, ast.Assign):
+        written.append(stmt.target)
+    elif isinstance(stmt, ast.For):
+        written.append(stmt.variable)
+    for item in written:
+        key = variable_key(item.value if isinstance(item, ast.Arg) else item)
+        if key is None:
+            continue
+        for counter, loop in counters:
+            if counter == key:
+                found.counter_writes.append((item, loop))
+                break
 
 
 def _operations(node: ast.Expr, calls: list[ast.Call], signs: list[Signed]) -> None:

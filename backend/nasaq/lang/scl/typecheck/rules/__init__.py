@@ -9,20 +9,22 @@ code at once). ``EXPRESSIONS``, ``STATEMENTS`` and ``BLOCKS`` are what the check
 | ``undeclared`` | SCL201 | names, ``#locals``, ``"symbols"`` must be declared |
 | ``literals`` | SCL218, SCL219 | typed constants: valid, and in range |
 | ``members`` | SCL222 | ``a.b``: the member exists |
-| ``indexing`` | SCL216, SCL217 | number of indices, indexing a non-array |
+| ``indexing`` | SCL216, SCL217, SCL249 | number of indices, arrays only, constant indices |
 | ``operators`` | SCL211, SCL212 | operand types, implicit conversions |
 | ``calls`` | — | result types of standard functions and FCs |
-| ``call_parameters`` | SCL223–SCL234, SCL247 | the callee and its actual parameters |
+| ``call_parameters`` | SCL223–SCL234, SCL247, SCL251 | callee, actual parameters, FB calls |
 | ``assignment`` | SCL213, SCL214, SCL218 | assignment compatibility |
 | ``assign_input`` | SCL215 | no assignment to an input parameter |
 | ``conditions`` | SCL220 | IF/ELSIF/WHILE/REPEAT conditions are BOOL |
 | ``for_variable`` | SCL221 | FOR variable INT/DINT, bounds assignable to it |
-| ``case_labels`` | SCL235, SCL236 | CASE selector INT, each label value once |
+| ``case_labels`` | SCL235, SCL236, SCL248 | CASE selector INT, labels once, ranges upwards |
+| ``counter_writes`` | SCL250 (warning) | no write to the FOR variable inside its loop |
 | ``sign_after_operator`` | SCL246 (warning) | ``A * -B`` |
 | ``loop_jumps`` | SCL237 | EXIT/CONTINUE inside a loop |
 | ``labels`` | SCL238–SCL241, SCL206 | GOTO and jump labels |
 | ``return_value`` | SCL242 | an FC assigns its function value |
 | ``initial_values`` | SCL243–SCL245 | initial values of declarations |
+| ``temp_instances`` | SCL252 | no multi-instance in temporary variables |
 | ``db_values`` | SCL243 | the assignment section of a DATA_BLOCK |
 """
 
@@ -39,6 +41,7 @@ from nasaq.lang.scl.typecheck.rules import (
     call_parameters,
     case_labels,
     conditions,
+    counter_writes,
     db_values,
     for_variable,
     indexing,
@@ -50,6 +53,7 @@ from nasaq.lang.scl.typecheck.rules import (
     operators,
     return_value,
     sign_after_operator,
+    temp_instances,
     undeclared,
 )
 
@@ -88,8 +92,10 @@ STATEMENTS: list[tuple[StatementRule, tuple[type, ...]]] = [
 # Run for every block after its code (if it has code): the declarations, the DB's values.
 BLOCKS: list[BlockRule] = [
     initial_values.check,
+    temp_instances.check,
     db_values.check,
     loop_jumps.check,
     labels.check,
     return_value.check,
+    counter_writes.check,
 ]

@@ -14,8 +14,13 @@ checked against the callee's formal parameters (``signatures``; the callee is fo
 - a value without a name only for an FC with exactly one input, alone (``SQRT(x)`` and the
   other standard functions are not checked here), otherwise ``SCL229``;
 - a decimal constant to a counter's BCD preset ``PV := 100`` is taken as the word W#16#0064
-  (BCD 64), as the book's E67 does: a warning (``SCL247``), ``16#100`` is what is meant.
-A mistake in a parameter name does not also report the parameter as missing.
+  (BCD 64), as the book's E67 does: a warning (``SCL247``), ``16#100`` is what is meant;
+- an FB (or IEC timer/counter) call is a statement: it has no value, so inside an expression
+  (``x := FB1.DB1(...)``, ``IF inst(...) THEN``) it is ``SCL251``, unless the callee itself was
+  wrong (reported already).
+A mistake in a parameter name does not also report the parameter as missing. The actual
+parameters of outputs and in/outs are noted (``Context.written_actuals``): they write their
+variable (the FOR rule, ``counter_writes``, reads them).
 """
 
 from __future__ import annotations
@@ -56,14 +61,35 @@ COMPOUND = (ArrayType, StructType, BlockType)
 DATA_TYPES = (Elementary, StringType, *COMPOUND)
 BLOCK_PARAMETERS = {"BLOCK_FC": "FC", "BLOCK_FB": "FB", "BLOCK_SDB": "SDB"}
 BCD_LIMIT = 999  # three BCD digits, the range of an S5 counter
+INSTANCES = ("FB", "SFB")  # blocks called with an instance: they return no value
 
 
 def call(ctx: Context, node: ast.Call) -> Type:
     result = calls.call(ctx, node)
+    reported = len(ctx.diagnostics)
     signature = callee.resolve(ctx, node)
+    wrong_callee = len(ctx.diagnostics) > reported
     if signature is not None:
         _check(ctx, node, signature)
+    if id(node) not in ctx.outline.statement_calls and not wrong_callee:
+        block = _function_block(ctx, node, signature)
+        if block is not None:  # an FB has no value: nothing built on the call is reported
+            return ctx.report("SCL251", node.loc, name=ctx.text(node.callee), block=block)
     return result
+
+
+def _function_block(ctx: Context, node: ast.Call, signature: Signature | None) -> str | None:
+    """The FB (or SFB) an instance call calls, as messages name it; None for other calls. An FB
+    only the symbol table knows has no signature: ``Pump.PumpData(...)`` still shows it (the
+    base of a callee ``FB.DB`` is typed already)."""
+    if signature is not None:
+        return signature.label if signature.kind in INSTANCES else None
+    callee = node.callee
+    if isinstance(callee, ast.Member):
+        base = ctx.type_of(callee.base)
+        if isinstance(base, BlockRef) and base.kind.value in INSTANCES:
+            return f"{base.kind.value} {base.number}"
+    return None
 
 
 def _check(ctx: Context, node: ast.Call, signature: Signature) -> None:
@@ -108,6 +134,7 @@ def _argument(ctx: Context, signature: Signature, param: Param, arg: ast.Arg) ->
         if verdict.code is not None:
             ctx.report(verdict.code, arg.value.loc, **verdict.params)
         return
+    ctx.written_actuals.add(id(arg.value))
     formal = param.types[0]
     if not _writable(ctx, signature, param, arg.value, value) or is_silent(value):
         return

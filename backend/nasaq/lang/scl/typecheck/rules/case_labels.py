@@ -2,7 +2,8 @@
 compares it with INT constants, so a WORD such as ``PIW252`` needs ``WORD_TO_INT``, and a
 DINT ``DINT_TO_INT``. Each label is an integer constant that fits INT (``SCL218``, ``SCL214``
 as an assignment to INT), and each value may occur only once in the whole CASE, also inside
-ranges (``SCL236``, at the later label)."""
+ranges (``SCL236``, at the later label). A range ``low..high`` needs ``low <= high``: ``5..1``
+selects nothing (``SCL248``); it takes part in no overlap test."""
 
 from __future__ import annotations
 
@@ -37,6 +38,9 @@ def check(ctx: Context, stmt: ast.Stmt) -> None:
             low = _value(ctx, label.low)
             high = low if label.high is None else _value(ctx, label.high)
             if low is None or high is None:
+                continue
+            if label.high is not None and high < low:
+                ctx.report("SCL248", label.loc, low=ctx.text(label.low), high=ctx.text(label.high))
                 continue
             for first_low, first_high, line in seen:
                 if low <= first_high and first_low <= high:

@@ -1,7 +1,9 @@
 """Rule: indices. An array takes as many indices as it has dimensions, or fewer for a row of a
 matrix (``m[2]`` of ``ARRAY[1..3, 1..4]``); more is ``SCL216``, indexing something that is no
 array ``SCL217``. ``MW[i]`` takes one index (the byte), ``I[i, k]``/``DX[i, k]`` two (byte and
-bit). Each index must be an integer."""
+bit). Each index must be an integer. An index that is a constant (a number, a CONST name, an
+expression of them) must lie within the bounds of its dimension (``SCL249``): S7-SCL computes
+its address when it compiles, so it reports ``a[11]`` of ``ARRAY[1..10]`` there."""
 
 from __future__ import annotations
 
@@ -10,7 +12,16 @@ from typing import TYPE_CHECKING
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import UNKNOWN
 from nasaq.lang.scl.typecheck.operands import indexed_type
-from nasaq.lang.scl.typecheck.types import ERROR, Type, assignable, describe, is_silent
+from nasaq.lang.scl.typecheck.rules.initial_values import is_constant
+from nasaq.lang.scl.typecheck.types import (
+    ERROR,
+    BitsConst,
+    IntConst,
+    Type,
+    assignable,
+    describe,
+    is_silent,
+)
 from nasaq.lang.types import ArrayType, Elementary
 
 if TYPE_CHECKING:
@@ -19,11 +30,13 @@ if TYPE_CHECKING:
 _DINT = Elementary("DINT")
 
 
-def _indices(ctx: Context, indices: list[ast.Expr]) -> bool:
-    """Types the indices; False when one is wrong (reported)."""
+def _indices(ctx: Context, indices: list[ast.Expr]) -> list[Type] | None:
+    """The types of the indices; None when one is wrong (reported)."""
     good = True
+    found: list[Type] = []
     for index in indices:
         value = ctx.type_of(index)
+        found.append(value)
         if is_silent(value):
             good = good and value is not ERROR
             continue
@@ -31,7 +44,7 @@ def _indices(ctx: Context, indices: list[ast.Expr]) -> bool:
         if verdict.code is not None:
             ctx.report(verdict.code, index.loc, **verdict.params)
             good = False
-    return good
+    return found if good else None
 
 
 def index(ctx: Context, node: ast.Index) -> Type:
@@ -39,7 +52,7 @@ def index(ctx: Context, node: ast.Index) -> Type:
 
 
 def _element(ctx: Context, base: Type, name: str, indices: list[ast.Expr], where: ast.Loc) -> Type:
-    good = _indices(ctx, indices)
+    values = _indices(ctx, indices)
     if is_silent(base):
         return base
     if not isinstance(base, ArrayType):
@@ -47,11 +60,37 @@ def _element(ctx: Context, base: Type, name: str, indices: list[ast.Expr], where
     given, dims = len(indices), len(base.dims)
     if given > dims:
         return ctx.report("SCL216", where, name=name, expected=dims, actual=given)
-    if not good:
+    if values is None or not _within(ctx, name, base, indices, values):
         return ERROR
     if given < dims:  # a row of a matrix (seeds-003b §2.6)
         return ArrayType(base.dims[given:], base.element)
     return ctx.declared(base.element)
+
+
+def _within(
+    ctx: Context, name: str, base: ArrayType, indices: list[ast.Expr], values: list[Type]
+) -> bool:
+    """Reports each constant index outside its dimension; True when there is none."""
+    good = True
+    for index, value, (low, high) in zip(indices, values, base.dims, strict=False):
+        number = _constant(ctx, index, value)
+        if number is not None and not low <= number <= high:
+            ctx.report("SCL249", index.loc, value=number, name=name, low=low, high=high)
+            good = False
+    return good
+
+
+def _constant(ctx: Context, index: ast.Expr, value: Type) -> int | None:
+    """The value of a constant index, None for any other. Numbers, CONST names and ``+ - *``
+    of them are typed as their value already (``IntConst``); ``INT#5`` or ``N DIV 2`` are
+    folded by the binder's ``const_value`` (``is_constant`` first: a variable of the name
+    hides a CONST)."""
+    if type(value) is IntConst or type(value) is BitsConst:
+        return value.value
+    if not is_constant(ctx, index):
+        return None
+    found = ctx.index.const_value(ctx.block, index)
+    return found if isinstance(found, int) else None
 
 
 def indexed_address(ctx: Context, node: ast.IndexedAddress) -> Type:
@@ -60,7 +99,7 @@ def indexed_address(ctx: Context, node: ast.IndexedAddress) -> Type:
     # `i : INT` is the input area (names are case-insensitive): only an array is indexed.
     if variable is not None and (isinstance(variable.type, ArrayType) or variable.type == UNKNOWN):
         return _element(ctx, ctx.declared(variable.type), node.area, node.indices, node.loc)
-    good = _indices(ctx, node.indices)
+    good = _indices(ctx, node.indices) is not None
     value, count = indexed_type(node.area)
     if len(node.indices) != count:
         return ctx.report(
