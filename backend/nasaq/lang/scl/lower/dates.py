@@ -115,6 +115,9 @@ class Dates(Strings):
 
     def binary(self, node: ast.Binary, have: str) -> None:
         """DT - DT (a TIME) through SB_DT_DT; DATE - DATE in milliseconds."""
+        if have not in ("DATE_AND_TIME", "TIME"):  # what DT +/- and DATE - DATE give
+            super().binary(node, have)
+            return
         em = self.em
         name = self.library_operation(node)
         if name is not None:

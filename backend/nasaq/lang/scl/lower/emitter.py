@@ -38,6 +38,7 @@ class Emitter:
     loc: Loc = _START  # the SCL node being lowered: every instruction gets it
     _labels: int = 0
     _aliases: dict[str, str] = field(default_factory=dict)  # a label placed on another's spot
+    _jumps: list[stl.InstrNode] = field(default_factory=list)  # to rename aliases in
     _names: int = 0
 
     # ---- instructions -----------------------------------------------------------------------
@@ -73,7 +74,9 @@ class Emitter:
         return "ABCDEFGHIJKLMNOPQRSTUVWXYZ"[letter % 26] + digits
 
     def jump(self, mnemonic: str, label: str) -> None:
-        self.op(mnemonic, stl.AddressNode(label, self.loc))
+        node = stl.InstrNode(mnemonic, [stl.AddressNode(label, self.loc)], None, self.loc)
+        self.code.append(node)
+        self._jumps.append(node)
 
     def place(self, label: str) -> None:
         if self.code and isinstance(self.code[-1], stl.LabelNode):
@@ -87,11 +90,10 @@ class Emitter:
         if self.code and isinstance(self.code[-1], stl.LabelNode):
             self.op("NOP", self.literal("NUMBER", "0"))
         if self._aliases:
-            for item in self.code:
-                if isinstance(item, stl.InstrNode) and item.operands:
-                    target = item.operands[0]
-                    if isinstance(target, stl.AddressNode) and target.text in self._aliases:
-                        item.operands[0] = stl.AddressNode(self._aliases[target.text], target.loc)
+            for item in self._jumps:
+                target = item.operands[0]
+                if isinstance(target, stl.AddressNode) and target.text in self._aliases:
+                    item.operands[0] = stl.AddressNode(self._aliases[target.text], target.loc)
         return self.code
 
     # ---- hidden temporaries -----------------------------------------------------------------
