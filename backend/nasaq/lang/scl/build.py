@@ -8,12 +8,12 @@ methods of its sub-rules returned. Positions come from tokens and child nodes.
 from __future__ import annotations
 
 import re
+from functools import partial
 from typing import Any
 
 from lark import Token
 
 from nasaq.lang.scl import ast
-from nasaq.lang.stl.build import loc as token_loc
 
 # ``m1``, ``i2``, ``qx3``: what the ADDR terminal takes but no S7 address is (an input, output or
 # memory bit needs its bit number), so it is an identifier: a variable called m1.
@@ -40,6 +40,16 @@ _SECTION_TYPES = (ast.VarSection, ast.ConstSection, ast.LabelSection)
 
 
 _NOWHERE = ast.Loc(1, 1, 1, 1)
+# ``Loc(...)`` without ``NamedTuple.__new__``'s Python frame: positions are made per node.
+_new_loc: Any = partial(tuple.__new__, ast.Loc)
+
+
+def token_loc(token: Token) -> ast.Loc:
+    """A token's position (``nasaq.lang.stl.build.loc``; a synthetic token may have none)."""
+    line = token.line or 1
+    column = token.column or 1
+    found: ast.Loc = _new_loc((line, column, token.end_line or line, token.end_column or column))
+    return found
 
 
 def loc_of(item: Any) -> ast.Loc:
@@ -52,10 +62,30 @@ def loc_of(item: Any) -> ast.Loc:
 
 
 def span(first: Any, last: Any) -> ast.Loc:
-    start, end = loc_of(first), loc_of(last)
-    if isinstance(last, ast.Block):
-        end = last.end
-    return ast.Loc(start.line, start.column, end.end_line, end.end_column)
+    """From the start of ``first`` to the end of ``last``: ``loc_of`` of each, read without
+    making their ``Loc`` where they are tokens or nodes (a few per node of the tree)."""
+    if first.__class__ is Token:
+        line = first.line or 1
+        column = first.column or 1
+    else:
+        try:
+            start = first.loc
+        except AttributeError:  # a list
+            start = loc_of(first)
+        line = start[0]
+        column = start[1]
+    if last.__class__ is Token:
+        end_line = last.end_line or last.line or 1
+        end_column = last.end_column or last.column or 1
+    else:
+        try:
+            end = last.end if isinstance(last, ast.Block) else last.loc
+        except AttributeError:
+            end = loc_of(last)
+        end_line = end[2]
+        end_column = end[3]
+    found: ast.Loc = _new_loc((line, column, end_line, end_column))
+    return found
 
 
 def _nodes(children: list[Any]) -> list[Any]:
@@ -287,11 +317,11 @@ class AstBuilder:
 
     def assign(self, children: list[Any]) -> ast.Assign:
         target, value = children
-        return ast.Assign(target, value, loc=span(target, value))
+        return ast.Assign(target, value, span(target, value))
 
     def call_stmt(self, children: list[Any]) -> ast.CallStmt:
         call: ast.Call = children[0]
-        return ast.CallStmt(call, loc=call.loc)
+        return ast.CallStmt(call, call.loc)
 
     def stmts(self, children: list[Any]) -> _Stmts:
         return _Stmts(_stmts(children))
@@ -385,23 +415,26 @@ class AstBuilder:
     def expr(self, children: list[Any]) -> ast.Expr:
         """A flat ``operand (op operand)+`` list → the ``Binary`` tree of S7-SCL precedence
         (precedence climbing; every level is left-associative)."""
+        if len(children) == 3:  # one operator: the common case
+            left, only, right = children
+            return ast.Binary(str(only).upper(), left, right, span(left, right))
         operands: list[Any] = [children[0]]
-        ops: list[Token] = []
+        ops: list[tuple[int, Token]] = []  # with their levels
         for position in range(1, len(children), 2):
             op: Token = children[position]
             level = _LEVEL[op.type]
-            while ops and _LEVEL[ops[-1].type] >= level:
-                _reduce(operands, ops)
-            ops.append(op)
+            while ops and ops[-1][0] >= level:
+                _reduce(operands, ops.pop()[1])
+            ops.append((level, op))
             operands.append(children[position + 1])
         while ops:
-            _reduce(operands, ops)
+            _reduce(operands, ops.pop()[1])
         found: ast.Expr = operands[0]
         return found
 
     def binary(self, children: list[Any]) -> ast.Binary:
         left, op, right = children
-        return ast.Binary(str(op).upper(), left, right, loc=span(left, right))
+        return ast.Binary(str(op).upper(), left, right, span(left, right))
 
     def unary(self, children: list[Any]) -> ast.Unary:
         op, operand = children
@@ -418,17 +451,17 @@ class AstBuilder:
         token: Token = children[0]
         kind = "BOOL" if token.type in ("TRUE", "FALSE") else token.type
         text = str(token).upper() if kind == "BOOL" else str(token)
-        return ast.Literal(kind, text, loc=token_loc(token))
+        return ast.Literal(kind, text, token_loc(token))
 
     def call(self, children: list[Any]) -> ast.Call:
         callee = children[0]
         args = [child for child in children[1:] if isinstance(child, ast.Arg)]
         last = args[-1] if args else callee
-        return ast.Call(callee, args, loc=span(callee, last))
+        return ast.Call(callee, args, span(callee, last))
 
     def positional(self, children: list[Any]) -> ast.Arg:
         value = children[0]
-        return ast.Arg(None, value, loc=loc_of(value))
+        return ast.Arg(None, value, False, loc_of(value))
 
     def named(self, children: list[Any]) -> ast.Arg:
         name, value = children
@@ -439,10 +472,11 @@ class AstBuilder:
         return ast.Arg(str(name), value, output=True, loc=span(name, value))
 
     def name(self, children: list[Any]) -> ast.Name:
-        return ast.Name(str(children[0]), loc=token_loc(children[0]))
+        token: Token = children[0]
+        return ast.Name(str(token), token_loc(token))
 
     def local(self, children: list[Any]) -> ast.Local:
-        return ast.Local(str(children[0])[1:], loc=token_loc(children[0]))
+        return ast.Local(str(children[0])[1:], token_loc(children[0]))
 
     def symbol(self, children: list[Any]) -> ast.Symbol:
         return ast.Symbol(str(children[0])[1:-1], loc=token_loc(children[0]))
@@ -466,7 +500,7 @@ class AstBuilder:
             part = self.address([token])
         else:
             part = self.name([token])
-        return ast.Member(base, part, loc=span(base, token))
+        return ast.Member(base, part, span(base, token))
 
     def indexed_member(self, children: list[Any]) -> ast.Member:
         base = children[0]
@@ -475,7 +509,7 @@ class AstBuilder:
 
     def index(self, children: list[Any]) -> ast.Index:
         base = children[0]
-        return ast.Index(base, list(children[1:]), loc=span(base, children[-1]))
+        return ast.Index(base, list(children[1:]), span(base, children[-1]))
 
 
 # Binding strength of the binary operators below ``**`` (higher binds tighter).
@@ -499,11 +533,11 @@ _LEVEL = {
 }
 
 
-def _reduce(operands: list[Any], ops: list[Token]) -> None:
+def _reduce(operands: list[Any], op: Token) -> None:
+    """The last two operands → their ``Binary`` by ``op``."""
     right = operands.pop()
-    left = operands.pop()
-    op = ops.pop()
-    operands.append(ast.Binary(str(op).upper(), left, right, loc=span(left, right)))
+    left = operands[-1]
+    operands[-1] = ast.Binary(str(op).upper(), left, right, span(left, right))
 
 
 class _Else(list[ast.Stmt]):

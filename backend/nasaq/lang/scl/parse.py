@@ -11,9 +11,12 @@ END_xxx of the constructs still open are supplied (an ``IF`` without ``END_IF`` 
 does not cascade. Reserved words the contextual lexer read as names (no rule accepts them
 there) are turned back into keywords first, so the message names them.
 
-Speed: on the good path the driver lexes (``_Driver.tokens``) and runs the LALR table
-(``_Driver.feed_fast``, over a flattened copy of Lark's table) itself, with gc off; recovery
-uses Lark's ``ParserState`` on the same stacks. ``python -m nasaq.lang.scl.bench`` measures it.
+Speed: a source is first parsed by ``nasaq.lang.scl.lalr`` (its own contextual lexer, Lark's
+table run directly, the AST builder called without Lark's wrappers), which gives up at the first
+syntax error; the driver then parses the source again from the start. The driver too lexes
+(``_Driver.tokens``) and runs the LALR table (``_Driver.feed_fast``) itself on the good path;
+recovery uses Lark's ``ParserState`` on the same stacks. Both run with gc off.
+``python -m nasaq.lang.scl.bench`` measures the parse.
 """
 
 from __future__ import annotations
@@ -33,7 +36,7 @@ from lark.parsers.lalr_analysis import Shift
 
 from nasaq.diagnostics import Diagnostic, render
 from nasaq.lang.lalr_recovery import RecoveringDriver
-from nasaq.lang.scl import ast
+from nasaq.lang.scl import ast, lalr
 from nasaq.lang.scl.grammar import parser
 from nasaq.lang.stl.build import loc
 from nasaq.lang.stl.diag import span
@@ -572,16 +575,29 @@ class _Driver(RecoveringDriver):
         return found
 
 
-def parse_source(file: str, text: str, lark: Lark | None = None) -> ParseResult:
+# Per terminal, the words ``_Driver.retype`` turns into keywords (the fast parse leaves them to it).
+_RESERVED = {"IDENT": _KEYWORDS | _VAR_WORDS, "HEADER_VALUE": _KEYWORDS | _VAR_WORDS}
+
+
+def parse_source(
+    file: str, text: str, lark: Lark | None = None, *, fast: bool = True
+) -> ParseResult:
     """Parses one SCL source; never raises for bad input (every problem is a diagnostic).
-    ``lark`` replaces the shared parser (tests pass one that records the rules it reduces)."""
+    ``lark`` replaces the shared parser (tests pass one that records the rules it reduces).
+    A source is first parsed by ``lalr.parse``, which gives up at the first syntax error; then
+    (or with ``fast=False``) by the recovering driver, from the start."""
     if text.startswith("\ufeff"):
         text = text[1:]
     gc_was_enabled = gc.isenabled()
     gc.disable()  # the parse allocates many small objects; collection passes make it quadratic
     try:
-        driver = _Driver(file, text, lark or parser())
-        items = driver.run()
+        lark = lark or parser()
+        items: list[Any] | None = lalr.parse(text, lark, _RESERVED) if fast else None
+        diagnostics: list[Diagnostic] = []
+        if items is None:
+            driver = _Driver(file, text, lark)
+            items = driver.run()
+            diagnostics = driver.diagnostics
     finally:
         if gc_was_enabled:
             gc.enable()
@@ -593,4 +609,4 @@ def parse_source(file: str, text: str, lark: Lark | None = None) -> ParseResult:
         for attribute in item
         if isinstance(attribute, ast.Attribute)
     ]
-    return ParseResult(ast.SourceFile(file, blocks, pragmas), driver.diagnostics)
+    return ParseResult(ast.SourceFile(file, blocks, pragmas), diagnostics)

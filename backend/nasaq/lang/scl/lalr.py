@@ -1,0 +1,392 @@
+"""The fast parse of a source without syntax errors: Lark's LALR table run directly, each
+reduction calling the AST builder's method with the children Lark would have passed it.
+
+Lark reduces through layers of wrappers (``ChildFilterLALR_NoPlaceholders`` dropping filtered
+tokens and splicing in ``_rule`` children, ``ExpandSingleChild`` for ``?rule``, ``Tree`` objects
+for the inlined ``_rule`` and ``__x_star`` helpers). Here those layers are read once per parser
+and turned into one step per rule: a ``_rule``'s value is the plain list of its children, a
+``?rule`` of one kept child keeps the child's value without a call, and filtered terminals are
+never made into tokens (``nasaq.lang.scl.lexer``). The callbacks' semantics stay Lark's; a
+parser whose callbacks are not Lark's plain ones (a test recording them) has no fast table.
+
+``parse`` returns None at the first thing it cannot do as Lark would (a syntax error, a lexer
+problem): the caller then parses the source with the recovering driver.
+
+The table: per state, the action of each terminal and the goto of each rule name. A shift or
+goto is the next state (an ``int``); a reduction is ``(size, rule name, reduce)``, ``reduce``
+None where the rule's value is the list of its children, or a ``_Pass``.
+"""
+
+from __future__ import annotations
+
+import weakref
+from bisect import bisect_left
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from functools import partial
+from operator import itemgetter
+from types import MethodType
+from typing import Any
+
+from lark import Lark, Token, Tree
+from lark.grammar import Terminal
+from lark.lexer import ContextualLexer
+from lark.parse_tree_builder import ChildFilterLALR_NoPlaceholders, ExpandSingleChild
+from lark.parsers.lalr_analysis import Shift
+
+from nasaq.lang.scl.lexer import FastLexer, FastPathError, line_breaks
+
+Children = list[Any]
+Reduce = Callable[[Children], Any]
+
+
+class _Pass:
+    """A reduction by a rule of one symbol whose value is that symbol's (``?expr: unary``,
+    ``_stmt: _statement``): only the state on top of the stack changes. ``after`` remembers,
+    per state below it, the state the whole chain of such reductions ends in (``a`` in
+    ``x := a;`` is reduced as primary, power, unary and expr in one step)."""
+
+    __slots__ = ("after", "name")
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+        self.after: dict[int, int] = {}
+
+
+Table = list[dict[str, Any]]  # see the module's docstring
+
+
+@dataclass(frozen=True, slots=True)
+class _Fast:
+    table: Table
+    start: int
+    end: int
+    dropped: frozenset[str]  # terminals that no rule keeps
+    lexer: FastLexer
+    reserved: Mapping[str, frozenset[str]]
+
+
+_PLANS: weakref.WeakKeyDictionary[Lark, _Fast | None] = weakref.WeakKeyDictionary()
+
+
+Keep = list[tuple[int, bool]]  # Lark's child filter: the index of each kept child, and
+# whether it is an inlined rule's list to splice in
+
+
+def _all(keep: Keep, size: int) -> bool:
+    return keep == [(index, False) for index in range(size)]
+
+
+def _collect(keep: Keep, size: int) -> Reduce | None:
+    """The children Lark's child filter passes on; None where that is all of them, as they
+    are (the slice of the value stack is a new list already)."""
+    if _all(keep, size):
+        return None
+    if keep == [(0, True), (1, False)]:  # a repetition helper adding an item
+        return _append
+    if keep == [(0, True), (1, True)]:
+        return _extend
+    if keep == [(0, True)] + [(index, False) for index in range(1, size)]:
+        return _append_rest  # ... adding an item after an operator or a comma
+    return partial(_filter, keep)
+
+
+def _append(children: Children) -> Children:
+    found: Children = children[0]
+    found.append(children[1])
+    return found
+
+
+def _append_rest(children: Children) -> Children:
+    found: Children = children[0]
+    found += children[1:]
+    return found
+
+
+def _extend(children: Children) -> Children:
+    found: Children = children[0]
+    if not found:  # Lark then takes the second list itself
+        found = children[1]
+    else:
+        found += children[1]
+    return found
+
+
+def _filter(keep: Keep, children: Children) -> Children:
+    """Lark's ``ChildFilterLALR_NoPlaceholders``, with spliced children as plain lists."""
+    found: Children = []
+    for index, splice in keep:
+        if not splice:
+            found.append(children[index])
+        elif found:
+            found += children[index]
+        else:
+            found = children[index]
+    return found
+
+
+def _call(build: Reduce, keep: Keep, size: int) -> Reduce:
+    """``build`` called with the kept children, the list made in the same step for the common
+    shapes (one call per reduction instead of Lark's two or three)."""
+    if _all(keep, size):
+        return build
+    if not any(splice for _, splice in keep):
+        indices = [index for index, _ in keep]
+        if len(indices) == 1:
+            (first,) = indices
+            return lambda children: build([children[first]])
+        if len(indices) == 2:  # the common shapes, unrolled
+            first, second = indices
+            return lambda children: build([children[first], children[second]])
+        pick = itemgetter(*indices) if indices else (lambda children: ())
+        return lambda children: build(list(pick(children)))
+    if keep == [(0, True)]:
+        return lambda children: build(children[0])
+    if keep == [(0, False), (1, True)]:
+        return lambda children: build([children[0], *children[1]])
+    collect = partial(_filter, keep)
+    return lambda children: build(collect(children))
+
+
+def _single_or(build: Reduce, keep: Keep, size: int) -> Reduce:
+    """A ``?rule``: its one kept child, or the rule's node for more."""
+    if keep == [(0, False), (1, True)]:  # ``?expr: unary (op unary)*``
+
+        def first_and_list(children: Children) -> Any:
+            rest: Children = children[1]
+            return build([children[0], *rest]) if rest else children[0]
+
+        return first_and_list
+    collect = _collect(keep, size)
+
+    def reduce(children: Children) -> Any:
+        found = children if collect is None else collect(children)
+        return found[0] if len(found) == 1 else build(found)
+
+    return reduce
+
+
+def _tree_name(build: Any) -> str | None:
+    """The rule name when ``build`` is Lark's default ``partial(Tree, name)``."""
+    plain = isinstance(build, partial) and build.func is Tree and not build.keywords
+    if plain and len(build.args) == 1 and isinstance(build.args[0], str):
+        return build.args[0]
+    return None
+
+
+def _reduction(rule: Any, callback: Any, transformer: Any) -> Reduce | _Pass | None:
+    """One rule's reduction: a function of the children's values; None where the value is the
+    list of them; a ``_Pass`` for the value of a single child. Raises ``FastPathError`` for a
+    callback that is not one of Lark's plain wrappers around ``transformer``'s methods."""
+    size = len(rule.expansion)
+    keep: Keep = [(index, False) for index in range(size)]
+    if isinstance(callback, ChildFilterLALR_NoPlaceholders):
+        keep = [(index, bool(splice)) for index, splice in callback.to_include]
+        callback = callback.node_builder
+    single = isinstance(callback, ExpandSingleChild)
+    if single:
+        callback = callback.node_builder
+    name = str(rule.origin.name)
+    tree = _tree_name(callback)
+    if name.startswith("_"):  # spliced into its parent: its value is the list of children
+        if single or tree != name:
+            raise FastPathError(f"an inlined rule with its own callback: {name}")
+        return _Pass(name) if keep == [(0, True)] and size == 1 else _collect(keep, size)
+    if tree is not None:
+        build: Reduce = partial(Tree, tree)
+    elif isinstance(callback, MethodType) and callback.__self__ is transformer:
+        build = callback
+    else:
+        raise FastPathError(f"a callback that is not the transformer's: {name}")
+    if single:
+        if keep == [(0, False)] and size == 1:
+            return _Pass(name)
+        return _single_or(build, keep, size)
+    return _call(build, keep, size)
+
+
+def _build(lark: Lark, reserved: Mapping[str, frozenset[str]]) -> _Fast:
+    frontend: Any = lark.parser
+    lalr = frontend.parser.parser
+    if not isinstance(frontend.lexer, ContextualLexer):
+        raise FastPathError("not the contextual lexer")
+    callbacks: dict[Any, Any] = lalr.callbacks
+    if any(isinstance(key, str) for key in callbacks):
+        raise FastPathError("terminal callbacks")
+    transformer = lark.options.transformer
+    reductions = {rule: _reduction(rule, callbacks[rule], transformer) for rule in lark.rules}
+    states: dict[int, dict[str, tuple[Any, Any]]] = lalr.parse_table.states
+    table: Table = [{} for _ in range(max(states) + 1)]
+    for state, actions in states.items():
+        row = table[state]
+        for kind, (what, arg) in actions.items():
+            reduction = reductions.get(arg)
+            if what is Shift:
+                row[kind] = arg
+            elif isinstance(reduction, _Pass):  # one per action: it remembers its chains
+                row[kind] = _Pass(reduction.name)
+            else:
+                row[kind] = (len(arg.expansion), str(arg.origin.name), reduction)
+    kept = {
+        str(symbol.name)
+        for rule in lark.rules
+        for symbol in rule.expansion
+        if isinstance(symbol, Terminal) and (rule.options.keep_all_tokens or not symbol.filter_out)
+    }
+    dropped = frozenset(terminal.name for terminal in lark.terminals) - kept
+    if len(lark.options.start) != 1:
+        raise FastPathError("more than one start rule")
+    (origin,) = lark.options.start
+    start = lalr.parse_table.start_states[origin]
+    end = lalr.parse_table.end_states[origin]
+    lexer = FastLexer(frontend.lexer, reserved, dropped)
+    return _Fast(table, start, end, dropped, lexer, reserved)
+
+
+def _fast(lark: Lark, reserved: Mapping[str, frozenset[str]]) -> _Fast | None:
+    """The fast tables of ``lark``, made on its first parse (after a test has wrapped its
+    callbacks: then there are none); None where Lark's setup is not one they reproduce."""
+    found = _PLANS.get(lark)
+    if lark not in _PLANS or (found is not None and found.reserved != reserved):
+        try:
+            found = _build(lark, reserved)
+        except FastPathError:
+            found = None
+        _PLANS[lark] = found
+    return found
+
+
+def parse(text: str, lark: Lark, reserved: Mapping[str, frozenset[str]]) -> list[Any] | None:
+    """The value of ``start`` for ``text``, or None where the recovering driver must parse it
+    (``reserved``: per terminal, the words the driver reads as keywords instead)."""
+    fast = _fast(lark, reserved)
+    if fast is None:
+        return None
+    try:
+        found: list[Any] | None = _run(fast, text)
+    except FastPathError:
+        return None
+    return found
+
+
+def _run(fast: _Fast, text: str) -> Any:
+    """The parse loop: the contextual lexer's step (with ``FastLexer``'s scanners) and the
+    LALR steps in one function, as calls per token would cost a good part of the parse.
+    None at a syntax error; ``FastPathError`` where the lexer is unsure."""
+    table = fast.table
+    lexer = fast.lexer
+    scanners = lexer.by_state
+    newlines = line_breaks(text)
+    index = 0  # of the first line break at or after the start of the last token
+    line_break = newlines[0]
+    line, line_start = 1, 0
+    pos = 0
+    size = len(text)
+    new = str.__new__
+    dropped = fast.dropped
+    state = fast.start  # the state on top of the stack
+    stack = [state]
+    values: list[Any] = []
+    while pos < size:
+        # ---- the next token, as Lark's contextual lexer makes it in this state
+        scanner = scanners[state] or lexer.scanner(state)
+        found = scanner.match(text, pos)
+        if found is None:
+            if scanner.rest.fullmatch(text, pos) is not None:
+                break
+            raise FastPathError("no terminal of the parser state matches")
+        group: Any = found.lastindex
+        kind, words, keep, multiline = scanner.groups[group]
+        start, pos = found.span(group)
+        if start > line_break:  # line breaks before the token
+            index = bisect_left(newlines, start, index)
+            line_break = newlines[index]
+            line, line_start = index + 1, newlines[index - 1] + 1
+        spans_lines = pos > line_break
+        if spans_lines and not multiline:
+            raise FastPathError("a line break Lark does not count")
+        if words is not None:  # a name: a keyword of the state, or a reserved word?
+            value = found.group(group)
+            if words.ascii and value.isascii():
+                kind = words.get(value.upper(), kind)
+            else:
+                kind = words.kind_of(value)
+            if not kind:
+                raise FastPathError("a reserved word read as a name")
+            keep = kind not in dropped
+        elif keep:
+            value = found.group(group)
+        if keep:  # Token(kind, value, start, line, column, end_line, end_column, pos)
+            token = new(Token, value)
+            token.type = kind
+            token.start_pos = start
+            token.value = value
+            token.line = line
+            token.column = column = start - line_start + 1
+            if spans_lines:
+                last = bisect_left(newlines, pos, index)
+                token.end_line, token.end_column = last + 1, pos - newlines[last - 1]
+            else:
+                token.end_line, token.end_column = line, column + pos - start
+            token.end_pos = pos
+        else:
+            token = None
+        # ---- the LALR steps: reductions until the token is shifted
+        while True:
+            action = table[state].get(kind)
+            if action.__class__ is int:
+                state = action
+                stack.append(state)
+                values.append(token)
+                break
+            if action is None:
+                return None
+            if action.__class__ is _Pass:
+                below = action.after.get(stack[-2])
+                state = stack[-1] = below or _after(table, stack, kind, action)
+                continue
+            count, name, reduce = action
+            if count:  # the value and the state replace those of the first child
+                children = values[-count:]
+                if count > 1:
+                    del values[1 - count :]
+                    del stack[1 - count :]
+                values[-1] = children if reduce is None else reduce(children)
+                state = stack[-1] = table[stack[-2]][name]
+            else:
+                values.append([] if reduce is None else reduce([]))
+                state = table[state][name]
+                stack.append(state)
+    return _finish(fast, stack, values)
+
+
+def _after(table: Table, stack: list[int], kind: str, action: _Pass) -> int:
+    """The state on top once ``action`` and the ``_Pass`` reductions after it are done."""
+    below = stack[-2]
+    found = action.after.get(below)
+    if found is None:
+        found = table[below][action.name]
+        while (then := table[found].get(kind)).__class__ is _Pass:
+            found = table[below][then.name]
+        action.after[below] = found
+    return found
+
+
+def _finish(fast: _Fast, stack: list[int], values: list[Any]) -> Any:
+    """Lark's ``feed_token($END, is_end=True)``: reduce until the start rule's end state."""
+    table = fast.table
+    while True:
+        action = table[stack[-1]].get("$END")
+        if action is None or action.__class__ is int:
+            return None
+        if action.__class__ is _Pass:
+            stack[-1] = table[stack[-2]][action.name]
+        else:
+            size, name, reduce = action
+            children = values[len(values) - size :]
+            del stack[len(stack) - size :]
+            del values[len(values) - size :]
+            values.append(children if reduce is None else reduce(children))
+            stack.append(table[stack[-1]][name])
+        if stack[-1] == fast.end:
+            return values[-1]
