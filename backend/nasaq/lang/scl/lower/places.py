@@ -80,6 +80,7 @@ class Base:
         self.block = block
         self.em = em
         self.ctx = ctx if ctx is not None else Context(index, block, EXPRESSIONS)
+        self.checked = self.ctx.types  # id(expression) -> its type, as the checker found it
         self.diagnostics: list[Diagnostic] = []
         self.hoisted: dict[int, Temp] = {}  # id(call) -> the temporary that holds its value
         self.constants: dict[int, tuple[ast.Expr, Value | None]] = {}  # id -> (node, value)
@@ -92,9 +93,13 @@ class Base:
     # ---- types ------------------------------------------------------------------------------
 
     def type_of(self, node: ast.Expr) -> Type:
-        if id(node) in self.hoisted:
-            return self.hoisted[id(node)].type
-        found = self.ctx.type_of(node)
+        key = id(node)
+        temp = self.hoisted.get(key)
+        if temp is not None:
+            return temp.type
+        found = self.checked.get(key)  # the checker typed nearly everything already
+        if found is None:
+            found = self.ctx.type_of(node)
         if found is ANYTHING and isinstance(node, ast.Call):
             return self.selection_type(node)
         return found
@@ -125,9 +130,10 @@ class Base:
         return Elementary(common) if common is not None else ANYTHING
 
     def scalar_of(self, node: ast.Expr) -> str:
-        found = scalar(self.type_of(node))
+        data_type = self.type_of(node)
+        found = scalar(data_type)
         if found is None:
-            raise LoweringError(node.loc, f"a value of type {self.type_of(node)!s}")
+            raise LoweringError(node.loc, f"a value of type {data_type!s}")
         return found
 
     def constant(self, node: ast.Expr) -> Value | None:

@@ -52,6 +52,11 @@ class Context:
     def file(self) -> str:
         return self.block.file
 
+    @property
+    def types(self) -> dict[int, Type]:
+        """The types found so far by ``id`` of the expression (the code generator reads them)."""
+        return self._types
+
     def report(self, code: str, loc: ast.Loc, **params: Any) -> Type:
         """Records a diagnostic; returns ``ERROR``, the type of what was wrong."""
         self.diagnostics.append(problem(code, self.file, loc, **params))
