@@ -18,6 +18,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from enum import IntEnum, StrEnum
 
+from nasaq.ir.fast_init import fast_init
+
 
 class Area(StrEnum):
     I = "I"  # noqa: E741 - the S7 area name
@@ -40,6 +42,7 @@ class Width(IntEnum):
     DWORD = 32
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class Direct:
     """``I 0.0``, ``MW 10``, ``DBX 2.1``, ``DB5.DBW 4`` (``db=5``), ``L 0.0``, ``PIW 256``."""
@@ -51,6 +54,7 @@ class Direct:
     db: int | None = None
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class MemoryIndirect:
     """``I [MD 2]``, ``DBW [#ptr]``: the address comes from a DWORD area pointer at ``pointer``.
@@ -65,6 +69,7 @@ class MemoryIndirect:
     target: str | None = None  # None for memory; "T", "C", "DB", "DI", "FC", "FB", "SFC"
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class RegisterIndirect:
     """``DBX [AR1, P#0.0]`` (area given, area-internal) or ``[AR1, P#2.0]`` (area-crossing:
@@ -100,6 +105,7 @@ class ConstType(StrEnum):
     STRING = "STRING"
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class Constant:
     """``pattern`` is the unsigned 32-bit value ``L`` loads into ACCU1 (INT constants are 16-bit
@@ -115,11 +121,13 @@ class Constant:
     text: str = ""
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class TimerRef:
     number: int
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class CounterRef:
     number: int
@@ -136,12 +144,14 @@ class BlockKind(StrEnum):
     UDT = "UDT"
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class BlockRef:
     kind: BlockKind
     number: int
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class LabelRef:
     name: str
@@ -162,6 +172,7 @@ class StatusCondition(StrEnum):
     UO = "UO"
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class Register:
     """``L STW`` / ``T STW``, ``L DBNO``, ``L DBLG``, ``L DINO``, ``L DILG``, ``LAR1 AR2``.
@@ -174,6 +185,7 @@ class Register:
     name: str
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class ParamRef:
     """A formal parameter of the running FC, accessed by reference through the call frame."""
@@ -184,6 +196,7 @@ class ParamRef:
     bit_offset: int = 0  # into the parameter, for member access of a struct parameter
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class MultiInstance:
     """``CALL #Motor1``: an FB instance inside the calling FB's instance data at ``offset_bits``."""
@@ -192,12 +205,14 @@ class MultiInstance:
     name: str
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class CallArg:
     name: str  # formal parameter name
     value: Operand  # actual parameter, resolved like any operand
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class CallInfo:
     """``CALL FB 1, DB 10 (IN := I 0.0, ...)``; ``CALL FC 2 (...)``; ``CALL #inst (...)``."""

@@ -4,9 +4,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from nasaq.ir.fast_init import fast_init
 from nasaq.ir.operands import BlockKind, CallInfo, Operand
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class Origin:
     """Where an instruction came from: the STL line, or the SCL line, or the LAD/FBD element."""

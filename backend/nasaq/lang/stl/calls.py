@@ -33,7 +33,7 @@ from nasaq.lang.stl import ast
 from nasaq.lang.stl.bind import Param
 from nasaq.lang.stl.build import unquote_chars
 from nasaq.lang.stl.constants import POINTER_AREAS
-from nasaq.lang.stl.resolve import Resolved, Resolver, Scope
+from nasaq.lang.stl.resolve import Resolved, Resolver, Scope, cache_key
 from nasaq.lang.system_blocks import SFB_INTERFACES
 from nasaq.lang.types import (
     ArrayType,
@@ -185,8 +185,22 @@ class CallLowerer:
         self.scope = scope
         self.resolver = resolver
         self.auto = auto
+        self._known: dict[tuple[object, ...], CallInfo] = {}
 
     def call(self, node: ast.InstrNode) -> CallInfo | None:
+        """The call of ``CALL``. A block repeats the same calls (generated code above all): one
+        written the same way is lowered once, unless lowering it reported something."""
+        key = _call_key(node)
+        found = self._known.get(key) if key is not None else None
+        if found is not None:
+            return found
+        reported = len(self.scope.diagnostics)
+        found = self._call(node)
+        if key is not None and found is not None and len(self.scope.diagnostics) == reported:
+            self._known[key] = found
+        return found
+
+    def _call(self, node: ast.InstrNode) -> CallInfo | None:
         if not node.operands:
             self.scope.report("STL202", node.loc, mnemonic="CALL", expected="a block")
             return None
@@ -404,3 +418,20 @@ class CallLowerer:
             if required:
                 self.scope.report("STL211", where, param=param.name, block=label)
         return result
+
+
+def _call_key(node: ast.InstrNode) -> tuple[object, ...] | None:
+    """What a call is lowered from: ``cache_key`` of its operands and of its arguments, with
+    their names (None when one has none)."""
+    key: list[object] = []
+    for operand in node.operands:
+        found = cache_key(operand)
+        if found is None:
+            return None
+        key.append(found)
+    for arg in node.args or ():
+        value = None if arg.value is None else cache_key(arg.value)
+        if value is None and arg.value is not None:
+            return None
+        key += (arg.name, value)
+    return tuple(key)

@@ -174,8 +174,22 @@ _WORD_CONSTANTS = frozenset(
 _DWORD_CONSTANTS = _WORD_CONSTANTS | {ConstType.DWORD, ConstType.DINT}
 
 
+# The kind of the operands whose class alone tells it.
+_KIND_OF_CLASS: dict[type, str] = {
+    Constant: "const",
+    TimerRef: "timer",
+    CounterRef: "counter",
+    StatusCondition: "status",
+    Register: "register",
+    MultiInstance: "multi",
+}
+
+
 def kind_of(resolved: Resolved) -> str:
     operand = resolved.operand
+    kind = _KIND_OF_CLASS.get(type(operand))
+    if kind is not None:
+        return kind
     if isinstance(operand, Direct | RegisterIndirect):
         return _WIDTH_KIND[operand.width]
     if isinstance(operand, MemoryIndirect):
@@ -187,18 +201,6 @@ def kind_of(resolved: Resolved) -> str:
             return _WIDTH_KIND[operand.width]
         name = resolved.type.name if isinstance(resolved.type, Elementary) else ""
         return _PARAM_KIND.get(name, "structured")
-    if isinstance(operand, Constant):
-        return "const"
-    if isinstance(operand, TimerRef):
-        return "timer"
-    if isinstance(operand, CounterRef):
-        return "counter"
-    if isinstance(operand, StatusCondition):
-        return "status"
-    if isinstance(operand, Register):
-        return "register"
-    if isinstance(operand, MultiInstance):
-        return "multi"
     if isinstance(operand, BlockRef):
         return "db" if operand.kind in (BlockKind.DB, BlockKind.DI) else "code"
     return "other"  # pragma: no cover - every operand kind is listed above
@@ -269,7 +271,8 @@ def _wrong(op: str, resolved: Resolved, rule: Rule) -> Problem:
 def _check_constant(op: str, constant: Constant, text: str) -> Problem | None:
     if constant.type in NOT_LOADABLE:
         return "STL107", {"text": text, "reason": NOT_LOADABLE[constant.type]}
-    wrong: Problem = ("STL204", {"mnemonic": op, "operand": text, "expected": "another constant"})
+    if op == "L":  # the common case first
+        return _wrong_constant(op, text) if constant.type is ConstType.BOOL else None
     if op in _CONST_RANGE:
         low, high = _CONST_RANGE[op]
         if constant.type is not ConstType.INT or not low <= int(constant.value) <= high:
@@ -282,15 +285,17 @@ def _check_constant(op: str, constant: Constant, text: str) -> Problem | None:
             return "STL237", {"text": text, "mnemonic": op, "limit": SHIFT_LIMITS[op]}
         return None
     if op == "+":
-        return None if constant.type in (ConstType.INT, ConstType.DINT) else wrong
-    if op in ("AW", "OW", "XOW"):
-        return None if constant.type in _WORD_CONSTANTS and constant.pattern <= 0xFFFF else wrong
-    if op in ("AD", "OD", "XOD"):
-        return None if constant.type in _DWORD_CONSTANTS else wrong
-    if op in ("LAR1", "LAR2", "+AR1", "+AR2"):
-        if constant.type is not ConstType.POINTER:
-            return wrong
-        return None
-    if op == "L" and constant.type is ConstType.BOOL:
-        return wrong
-    return None
+        fits = constant.type in (ConstType.INT, ConstType.DINT)
+    elif op in ("AW", "OW", "XOW"):
+        fits = constant.type in _WORD_CONSTANTS and constant.pattern <= 0xFFFF
+    elif op in ("AD", "OD", "XOD"):
+        fits = constant.type in _DWORD_CONSTANTS
+    elif op in ("LAR1", "LAR2", "+AR1", "+AR2"):
+        fits = constant.type is ConstType.POINTER
+    else:
+        fits = True
+    return None if fits else _wrong_constant(op, text)
+
+
+def _wrong_constant(op: str, text: str) -> Problem:
+    return "STL204", {"mnemonic": op, "operand": text, "expected": "another constant"}

@@ -23,7 +23,7 @@ from nasaq.lang.stl.calls import AutoInstance
 from nasaq.lang.stl.dbdata import DataBuilder
 from nasaq.lang.stl.diag import problem, sort_key
 from nasaq.lang.stl.library import LIBRARY_FILE, add_library_blocks
-from nasaq.lang.stl.lower import CodeLowerer, LoweredCode, apply_code
+from nasaq.lang.stl.lower import CodeLowerer, LoweredCode, Shared, apply_code
 from nasaq.lang.stl.mnemonics import detect
 from nasaq.lang.stl.parse import ParseResult, parse_source
 from nasaq.lang.stl.resolve import Scope
@@ -121,6 +121,7 @@ class _Compiler:
         self.program = Program()
         self.auto: dict[int, AutoInstance] = {}
         self.lowered: dict[tuple[BlockKind, int], LoweredCode] = {}
+        self.shared: dict[str, Shared] = {}  # what blocks lower alike, by mnemonic language
         self.scl_sources: list[Any] = []  # nasaq.lang.scl.ast.SourceFile
         self.scl_lines: dict[str, list[str]] = {}
         self.generated: list[tuple[str, ast.BlockNode]] = []
@@ -290,7 +291,8 @@ class _Compiler:
         block.interface = interface
         block.temp_bytes = info.temp_bits // 8
         scope = Scope(self.index, info, info.language, self.test_ops)
-        lowered = CodeLowerer(scope, file.lines, self.auto).lower(info.node.code)
+        shared = self.shared.setdefault(info.language, {})
+        lowered = CodeLowerer(scope, file.lines, self.auto, shared).lower(info.node.code)
         apply_code(block, lowered)
         self.lowered[(info.kind, info.number)] = lowered
         self.diagnostics += scope.diagnostics
@@ -336,11 +338,14 @@ class _Compiler:
         self.program.add(block)
 
     def resolve_jumps(self) -> None:
+        """Reports the jumps to a label that their block does not define (rare: the labels a
+        block jumps to are compared first, at once)."""
         owners: dict[str, str] = {}
         for (kind, number), lowered in self.lowered.items():
-            for label in lowered.labels:
-                owners.setdefault(label, f"{kind.value} {number}")
-        for (kind, number), lowered in self.lowered.items():
+            if {jump.label for jump in lowered.jumps} <= lowered.labels.keys():
+                continue
+            if not owners:
+                owners = self.label_owners()
             info = self.index.blocks[(kind, number)]
             for jump in lowered.jumps:
                 if jump.label in lowered.labels:
@@ -359,6 +364,14 @@ class _Compiler:
                     self.diagnostics.append(
                         problem("STL207", info.file, jump.loc, label=jump.label, block=info.label)
                     )
+
+    def label_owners(self) -> dict[str, str]:
+        """The first block that defines each label."""
+        owners: dict[str, str] = {}
+        for (kind, number), lowered in self.lowered.items():
+            for label in lowered.labels:
+                owners.setdefault(label, f"{kind.value} {number}")
+        return owners
 
 
 def compile_sources(

@@ -20,6 +20,7 @@ interface and no code; the CPU gives it its body (``nasaq.cpu.iec_library``).
 from __future__ import annotations
 
 from collections.abc import Iterable
+from itertools import product
 
 from nasaq.ir import BlockKind
 from nasaq.lang.iec_library import FAMILY, FUNCTIONS, RELOCATED_BASE, LibraryFunction
@@ -31,6 +32,7 @@ from nasaq.lang.types import DataType, StringType, type_text
 
 LIBRARY_FILE = "<IEC library>"
 _WHERE = ast.Loc(1, 1, 1, 1)
+_CALL_SPELLINGS = frozenset(map("".join, product(*zip("call", "CALL", strict=True))))
 
 
 def add_library_blocks(
@@ -61,7 +63,8 @@ def _called(
     wanted: dict[LibraryFunction, int | None] = {}
     for node in nodes:
         for item in node.code:
-            if not isinstance(item, ast.InstrNode) or item.mnemonic.upper() != "CALL":
+            # every instruction of the program passes here: one set lookup for most of them
+            if type(item) is not ast.InstrNode or item.mnemonic not in _CALL_SPELLINGS:
                 continue
             if not item.operands:
                 continue

@@ -64,6 +64,8 @@ BRACKET_OPENERS = frozenset({"A(", "AN(", "O(", "ON(", "X(", "XN("})
 BRACKET_OPS = BRACKET_OPENERS | {")", "MCR(", ")MCR"}
 MAX_BRACKET_NESTING = 7  # the S7-300/400 nesting stack
 MAX_MCR_NESTING = 8  # the MCR stack
+# Lowered at every use: a CALL's parameters, the test ops' two operands.
+NOT_KEPT = ASSERTS | {"CALL", "__FEATURE"}
 
 
 @dataclass(slots=True)
@@ -80,8 +82,22 @@ class LoweredCode:
     jumps: list[Jump] = field(default_factory=list)
 
 
+# An instruction lowered before, by the key ``CodeLowerer.lower`` makes: its op and operand,
+# and whether ``CodeLowerer.follow`` has something to do for it (a jump or a bracket).
+Known = tuple[str, Operand | None, bool]
+# The instructions that every block of a compilation lowers alike (those without a local
+# variable), lowered once: shared by the blocks of one mnemonic language.
+Shared = dict[object, Known]
+
+
 class CodeLowerer:
-    def __init__(self, scope: Scope, lines: list[str], auto: dict[int, AutoInstance]) -> None:
+    def __init__(
+        self,
+        scope: Scope,
+        lines: list[str],
+        auto: dict[int, AutoInstance],
+        shared: Shared | None = None,
+    ) -> None:
         self.scope = scope
         self.lines = lines
         self.resolver = Resolver(scope)
@@ -93,78 +109,143 @@ class CodeLowerer:
         self.open_mcr: list[ast.Loc] = []
         # Generated code (SCL) gives many instructions one source position, and repeats the
         # same instructions: origins, ops and simple instructions are worked out once each.
-        self._origins: dict[int, Origin] = {}  # by id of the source position
-        self._last_where: ast.Loc | None = None
+        self._file = scope.file
+        self._last_where: ast.Loc | None = None  # forgotten when a network starts
         self._last_origin = Origin("", 0, 0)
         self._ops: dict[str, str] = {}
-        self._simple: dict[tuple[object, ...], tuple[str, Operand | None]] = {}
-        self._labels: dict[str, LabelRef] = {}
+        self._shared: Shared = {} if shared is None else shared
+        self._simple: dict[object, Known] = {}
 
     # ---- items ------------------------------------------------------------------------------
 
     def lower(self, items: list[ast.CodeItem]) -> LoweredCode:
-        pending: list[ast.LabelNode] = []
+        """The code of a block. This loop is the hot path of a large compilation (the STL of
+        generated SCL is 100,000s of instructions): an instruction with at most one operand,
+        written as one before in the block (``_simple``) or in another (``_shared``), is that
+        one again at its own origin, made right here. Both are keyed by the mnemonic and what
+        ``cache_key`` of the operand would be (made here for the common operands)."""
+        pending: ast.LabelNode | None = None  # a label waiting for its instruction
+        simple = self._simple.get
+        shared = self._shared.get
+        append = self.out.code.append
+        new = object.__new__
         for item in items:
-            if isinstance(item, ast.InstrNode):
-                if item.param_line:
-                    self.param_line(item)
-                    continue
-                if self.last_call is not None:
-                    self.finish_call()
-                instruction = self.instruction(item)
-                if pending:
-                    self.define_label(pending.pop(), instruction)
-                self.out.code.append(instruction)
-                if instruction.op in BRACKET_OPS:
-                    self.track_brackets(instruction.op, item.loc)
+            if type(item) is not ast.InstrNode or item.param_line:
+                if type(item) is ast.LabelNode and pending is None and self.last_call is None:
+                    pending = item  # the label of the next instruction
+                else:
+                    pending = self.other_item(item, pending)
                 continue
-            self.finish_call()
-            if isinstance(item, ast.NetworkNode):
-                self.out.networks.append(Network("", len(self.out.code), self.comment(item.loc)))
-                self._last_where = None
-                self.flush_labels(pending)
-                self.last_call = None
-            elif isinstance(item, ast.TitleNode):
-                if not self.out.networks:
-                    self.out.networks.append(Network("", len(self.out.code)))
-                    self._last_where = None
-                network = self.out.networks[-1]
-                network.title = network.title or item.text
-                network.comment = network.comment or self.comment(item.loc)
-            elif isinstance(item, ast.LabelNode):
-                self.flush_labels(pending)
-                pending.append(item)
+            if self.last_call is not None:
+                self.finish_call()
+            where = item.loc
+            if where is not self._last_where:  # the instructions of an SCL statement share one
+                network = len(self.out.networks) or 1
+                self._last_origin = Origin(self._file, where.line, where.column, network)
+                self._last_where = where
+            origin = self._last_origin
+            operands = item.operands
+            key: object = None
+            if item.args is None:
+                if not operands:
+                    key = item.mnemonic
+                elif len(operands) == 1:
+                    first = operands[0]
+                    if type(first) is ast.SymbolNode and not first.path:
+                        key = (
+                            item.mnemonic,
+                            ast.SymbolNode,
+                            first.name,
+                            first.local,
+                            first.absolute_db,
+                        )
+                    elif type(first) is ast.LiteralNode:
+                        key = (item.mnemonic, ast.LiteralNode, first.kind, first.text)
+                    elif type(first) is ast.AddressNode:
+                        key = (item.mnemonic, ast.AddressNode, first.text)
+                    else:
+                        key = cache_key(first, item.mnemonic)
+            known = simple(key)
+            if known is None:
+                known = shared(key)  # lowered in another block
+                if known is not None:
+                    self._simple[key] = known
+            if known is None:
+                instruction, follow = self.instruction(item, key, origin), True
+            else:  # Instruction(op, operand, origin) field by field: faster (a test pins them)
+                instruction = new(Instruction)
+                instruction.op = known[0]
+                instruction.operand = known[1]
+                instruction.origin = origin
+                instruction.operand2 = instruction.label = instruction.call = None
+                follow = known[2]
+            if pending is not None:
+                self.define_label(pending, instruction)
+                pending = None
+            append(instruction)
+            if follow:
+                self.follow(instruction, item)
         self.finish_call()
-        self.flush_labels(pending)
+        self.flush_label(pending)
         self.unclosed_brackets()
         if self.out.code and not self.out.networks:
             self.out.networks.append(Network("", 0))
         return self.out
 
-    # ---- brackets ---------------------------------------------------------------------------
+    def other_item(self, item: ast.CodeItem, pending: ast.LabelNode | None) -> ast.LabelNode | None:
+        """A label, network, title or parameter line; the label waiting for its instruction
+        after it."""
+        if isinstance(item, ast.InstrNode):
+            self.param_line(item)
+            return pending
+        if self.last_call is not None:
+            self.finish_call()
+        if isinstance(item, ast.LabelNode):
+            self.flush_label(pending)
+            return item
+        if isinstance(item, ast.NetworkNode):
+            self.out.networks.append(Network("", len(self.out.code), self.comment(item.loc)))
+            self._last_where = None
+            self.flush_label(pending)
+            self.last_call = None
+            return None
+        if isinstance(item, ast.TitleNode):
+            if not self.out.networks:
+                self.out.networks.append(Network("", len(self.out.code)))
+                self._last_where = None
+            network = self.out.networks[-1]
+            network.title = network.title or item.text
+            network.comment = network.comment or self.comment(item.loc)
+        return pending
 
-    def track_brackets(self, op: str, where: ast.Loc) -> None:
-        """Bracket nesting in source order, as STEP 7 checks it when it compiles a block: a
-        ``)`` must close an open ``A(``..., at most 7 are open at once, all are closed at the end.
-        MCR areas are checked the same way (at most 8)."""
-        if op == "MCR(":
-            if len(self.open_mcr) == MAX_MCR_NESTING:
-                self.scope.report("STL240", where, op=op, limit=MAX_MCR_NESTING)
-            self.open_mcr.append(where)
-        elif op == ")MCR":
-            if not self.open_mcr:
-                self.scope.report("STL239", where, op=op)
-            else:
-                self.open_mcr.pop()
-        elif op.endswith("(") and op in BRACKET_OPENERS:
-            if len(self.open_brackets) == MAX_BRACKET_NESTING:
-                self.scope.report("STL240", where, op=op, limit=MAX_BRACKET_NESTING)
-            self.open_brackets.append((op, where))
-        elif op == ")":
-            if not self.open_brackets:
-                self.scope.report("STL239", where, op=op)
-            else:
+    # ---- jumps and brackets -----------------------------------------------------------------
+
+    def follow(self, instruction: Instruction, node: ast.InstrNode) -> None:
+        """What an instruction leaves to check: a jump its label (once the block is lowered),
+        a bracket its nesting, in source order, as STEP 7 checks it when it compiles a block:
+        a ``)`` must close an open ``A(``..., at most 7 are open at once, all are closed at the
+        end. MCR areas are checked the same way (at most 8)."""
+        op = instruction.op
+        if op == ")":
+            if self.open_brackets:
                 self.open_brackets.pop()
+            else:
+                self.scope.report("STL239", node.loc, op=op)
+        elif op in BRACKET_OPENERS:
+            if len(self.open_brackets) == MAX_BRACKET_NESTING:
+                self.scope.report("STL240", node.loc, op=op, limit=MAX_BRACKET_NESTING)
+            self.open_brackets.append((op, node.loc))
+        elif type(instruction.operand) is LabelRef:
+            self.out.jumps.append(Jump(instruction.operand.name, node.operands[0].loc))
+        elif op == "MCR(":
+            if len(self.open_mcr) == MAX_MCR_NESTING:
+                self.scope.report("STL240", node.loc, op=op, limit=MAX_MCR_NESTING)
+            self.open_mcr.append(node.loc)
+        elif op == ")MCR":
+            if self.open_mcr:
+                self.open_mcr.pop()
+            else:
+                self.scope.report("STL239", node.loc, op=op)
 
     def unclosed_brackets(self) -> None:
         for op, where in self.open_brackets:
@@ -184,10 +265,10 @@ class CodeLowerer:
             number += 1
         return "\n".join(found)
 
-    def flush_labels(self, pending: list[ast.LabelNode]) -> None:
-        for label in pending:
-            self.scope.report("STL230", label.loc, label=label.name)
-        pending.clear()
+    def flush_label(self, pending: ast.LabelNode | None) -> None:
+        """A label that no instruction follows."""
+        if pending is not None:
+            self.scope.report("STL230", pending.loc, label=pending.name)
 
     def define_label(self, label: ast.LabelNode, instruction: Instruction) -> None:
         name = label.name.upper()
@@ -221,18 +302,6 @@ class CodeLowerer:
 
     # ---- one instruction --------------------------------------------------------------------
 
-    def origin(self, where: ast.Loc) -> Origin:
-        """Where an instruction comes from. The instructions of one SCL statement follow each
-        other: ``instruction`` takes the last origin again when ``where`` is the same (``lower``
-        forgets it when a network starts)."""
-        network = len(self.out.networks) or 1
-        found = self._origins.get(id(where))  # the syntax tree keeps each ``where`` alive
-        if found is None or found.network != network:
-            found = Origin(self.scope.file, where.line, where.column, network)
-            self._origins[id(where)] = found
-        self._last_where, self._last_origin = where, found
-        return found
-
     def op_of(self, node: ast.InstrNode) -> str | None:
         """The international op of an instruction (None: reported); known mnemonics once."""
         found = self._ops.get(node.mnemonic)
@@ -265,25 +334,20 @@ class CodeLowerer:
         self.scope.report("STL201", node.loc, mnemonic=node.mnemonic, hint=hint)
         return None
 
-    def instruction(self, node: ast.InstrNode) -> Instruction:
-        """The IR instruction of a statement. A jump or an instruction with at most one operand,
-        written as one before, is that one again (at its own origin), unless that one reported
-        something."""
-        where = node.loc
-        origin = self._last_origin if where is self._last_where else self.origin(where)
-        key = _simple_key(node)
-        known = self._simple.get(key) if key is not None else None
-        if known is not None:
-            op, operand = known
-            if isinstance(operand, LabelRef):  # a jump: its label is resolved at the end
-                self.out.jumps.append(Jump(operand.name, node.operands[0].loc))
-            return Instruction(op, operand, origin)
+    def instruction(self, node: ast.InstrNode, key: object, origin: Origin) -> Instruction:
+        """An instruction not lowered before in this block. It is kept by ``key`` (None: not
+        kept) for the next ones written the same, unless lowering it reported something
+        (reported again at each), and for the other blocks when it means the same in every
+        block."""
         reported = len(self.scope.diagnostics)
         instruction = self.new_instruction(node, origin)
         op = instruction.op
-        repeatable = op != "CALL" and op not in ASSERTS and op != "__FEATURE"
-        if key is not None and repeatable and len(self.scope.diagnostics) == reported:
-            self._simple[key] = (op, instruction.operand)
+        if key is not None and op not in NOT_KEPT and len(self.scope.diagnostics) == reported:
+            operand = instruction.operand
+            follow = type(operand) is LabelRef or op in BRACKET_OPS
+            self._simple[key] = known = (op, operand, follow)
+            if _same_in_every_block(node):
+                self._shared[key] = known
         return instruction
 
     def new_instruction(self, node: ast.InstrNode, origin: Origin) -> Instruction:
@@ -331,12 +395,7 @@ class CodeLowerer:
                 expected="a label",
             )
             return None
-        label = name.upper()
-        self.out.jumps.append(Jump(label, target.loc))
-        found = self._labels.get(label)
-        if found is None:
-            found = self._labels[label] = LabelRef(label)
-        return found
+        return LabelRef(name.upper())  # ``follow`` keeps the jump for ``resolve_jumps``
 
     def two_operands(self, node: ast.InstrNode, op: str, instruction: Instruction) -> None:
         count = len(node.operands)
@@ -399,14 +458,17 @@ class CodeLowerer:
         return _plain(resolved.operand)
 
 
-def _simple_key(node: ast.InstrNode) -> tuple[object, ...] | None:
-    """What an instruction with at most one operand is lowered from (None for others): its
-    mnemonic and ``resolve.cache_key`` of the operand."""
-    if node.args is not None or len(node.operands) > 1:
-        return None
+def _same_in_every_block(node: ast.InstrNode) -> bool:
+    """Whether an instruction is lowered the same in every block (of one mnemonic language):
+    not when its operand may name a local variable (``#x``, ``P##x``, ``DBW [#p]``)."""
     if not node.operands:
-        return (node.mnemonic,)
-    return cache_key(node.operands[0], node.mnemonic)
+        return True
+    operand = node.operands[0]
+    if isinstance(operand, ast.SymbolNode):
+        return not operand.local
+    if isinstance(operand, ast.LiteralNode):
+        return not operand.text[2:].startswith("#")
+    return not isinstance(operand, ast.IndirectNode)
 
 
 def _plain(operand: Operand | MultiInstance) -> Operand | None:

@@ -175,11 +175,11 @@ class Resolver:
         return found
 
     def _operand(self, node: ast.OperandNode) -> Resolved | None:
-        text = operand_text(node)
         if isinstance(node, ast.AddressNode):
-            return self.address(node.text, node.loc, text)
+            return self.address(node.text, node.loc, node.text)
         if isinstance(node, ast.LiteralNode):
-            return self.literal(node, text)
+            return self.literal(node, node.text)
+        text = operand_text(node)
         if isinstance(node, ast.StatusNode):
             return Resolved(StatusCondition(node.text), None, text)
         if isinstance(node, ast.BareNode):

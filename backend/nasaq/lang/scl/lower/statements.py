@@ -32,7 +32,8 @@ class Statements(Dates):
         self.em.loc = stmt.loc
         method = getattr(self, "do_" + type(stmt).__name__.lower())
         method(stmt)
-        self.drop_hoisted()
+        if self.hoisted:
+            self.drop_hoisted()
 
     # ---- simple statements ------------------------------------------------------------------
 
