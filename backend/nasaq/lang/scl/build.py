@@ -2,18 +2,22 @@
 
 Each method is named after a rule or alias of ``grammars/scl.lark`` and receives that rule's
 children: tokens (named terminals; anonymous punctuation is filtered out by Lark) and what the
-methods of its sub-rules returned. Positions come from tokens and child nodes.
+methods of its sub-rules returned. Positions come from tokens and child nodes. A token is Lark's
+``Token`` in the recovering parse and a ``FastToken`` in the fast one (``nasaq.lang.scl.lalr``):
+the methods read only what both have (``type``, the text as ``value``, the position). Statement
+lists are new lists that the statement holding them keeps as they are.
 """
 
 from __future__ import annotations
 
 import re
-from functools import partial
-from typing import Any
+from collections.abc import Callable
+from typing import Any, ClassVar
 
 from lark import Token
 
 from nasaq.lang.scl import ast
+from nasaq.lang.scl.lexer import FastToken
 
 # ``m1``, ``i2``, ``qx3``: what the ADDR terminal takes but no S7 address is (an input, output or
 # memory bit needs its bit number), so it is an identifier: a variable called m1.
@@ -36,24 +40,33 @@ _STMT_TYPES = (
     ast.Region,
     ast.Bad,
 )
+_STMT_CLASSES = frozenset(_STMT_TYPES)  # a set look-up for the long statement lists
 _SECTION_TYPES = (ast.VarSection, ast.ConstSection, ast.LabelSection)
 
 
 _NOWHERE = ast.Loc(1, 1, 1, 1)
-# ``Loc(...)`` without ``NamedTuple.__new__``'s Python frame: positions are made per node.
-_new_loc: Any = partial(tuple.__new__, ast.Loc)
+# ``Loc(...)`` as ``_new(_Loc, (line, column, end_line, end_column))``, without
+# ``NamedTuple.__new__``'s Python frame: positions are made per node.
+_new: Any = tuple.__new__
+_Loc = ast.Loc
 
 
-def token_loc(token: Token) -> ast.Loc:
+# A token from Lark (the recovering parse) or from the fast parse: the builder reads its ``type``,
+# its text (``value``) and its position.
+AnyToken = Token | FastToken
+_TOKENS = (Token, FastToken)
+
+
+def token_loc(token: AnyToken) -> ast.Loc:
     """A token's position (``nasaq.lang.stl.build.loc``; a synthetic token may have none)."""
     line = token.line or 1
     column = token.column or 1
-    found: ast.Loc = _new_loc((line, column, token.end_line or line, token.end_column or column))
+    found: ast.Loc = _new(_Loc, (line, column, token.end_line or line, token.end_column or column))
     return found
 
 
 def loc_of(item: Any) -> ast.Loc:
-    if isinstance(item, Token):
+    if isinstance(item, _TOKENS):
         return token_loc(item)
     if isinstance(item, list):
         return loc_of(item[-1]) if item else _NOWHERE
@@ -64,7 +77,8 @@ def loc_of(item: Any) -> ast.Loc:
 def span(first: Any, last: Any) -> ast.Loc:
     """From the start of ``first`` to the end of ``last``: ``loc_of`` of each, read without
     making their ``Loc`` where they are tokens or nodes (a few per node of the tree)."""
-    if first.__class__ is Token:
+    kind = type(first)
+    if kind is FastToken or kind is Token:
         line = first.line or 1
         column = first.column or 1
     else:
@@ -74,7 +88,8 @@ def span(first: Any, last: Any) -> ast.Loc:
             start = loc_of(first)
         line = start[0]
         column = start[1]
-    if last.__class__ is Token:
+    kind = type(last)
+    if kind is FastToken or kind is Token:
         end_line = last.end_line or last.line or 1
         end_column = last.end_column or last.column or 1
     else:
@@ -84,16 +99,17 @@ def span(first: Any, last: Any) -> ast.Loc:
             end = loc_of(last)
         end_line = end[2]
         end_column = end[3]
-    found: ast.Loc = _new_loc((line, column, end_line, end_column))
+    found: ast.Loc = _new(_Loc, (line, column, end_line, end_column))
     return found
 
 
 def _nodes(children: list[Any]) -> list[Any]:
-    return [child for child in children if not isinstance(child, Token)]
+    return [child for child in children if not isinstance(child, _TOKENS)]
 
 
 def _stmts(children: list[Any]) -> list[ast.Stmt]:
-    return [child for child in children if isinstance(child, _STMT_TYPES)]
+    found: list[Any] = [child for child in children if type(child) in _STMT_CLASSES]
+    return found
 
 
 class _Title(str):
@@ -119,12 +135,35 @@ class _Source:
         self.node = node
 
 
-class _Stmts(list[ast.Stmt]):
-    pass
-
-
 class _Code(list[ast.Stmt]):
     begin = False
+
+
+# ---- nodes of one token (``AstBuilder.token_rules``) ----------------------------------------
+
+
+def literal_node(kind: str, text: str, where: ast.Loc) -> ast.Literal:
+    if kind == "TRUE" or kind == "FALSE":
+        return ast.Literal("BOOL", text.upper(), where)
+    return ast.Literal(kind, text, where)
+
+
+def name_node(kind: str, text: str, where: ast.Loc) -> ast.Name:
+    return ast.Name(text, where)
+
+
+def local_node(kind: str, text: str, where: ast.Loc) -> ast.Local:
+    return ast.Local(text[1:], where)
+
+
+def symbol_node(kind: str, text: str, where: ast.Loc) -> ast.Symbol:
+    return ast.Symbol(text[1:-1], where)
+
+
+def address_node(kind: str, text: str, where: ast.Loc) -> ast.Address | ast.Name:
+    if _NOT_AN_ADDRESS.match(text):  # ``m1 : INT``: an I/Q/M bit needs ``.bit``
+        return ast.Name(text, where)
+    return ast.Address(text.replace(" ", "").replace("\t", ""), where)
 
 
 class AstBuilder:
@@ -137,8 +176,8 @@ class AstBuilder:
         return _nodes(children)
 
     def block_id(self, children: list[Any]) -> ast.BlockName:
-        token: Token = children[0]
-        text = str(token)
+        token: AnyToken = children[0]
+        text = token.value
         if token.type == "QSYM":
             return ast.BlockName(text[1:-1], quoted=True, loc=token_loc(token))
         compact = text.replace(" ", "").replace("\t", "")
@@ -199,33 +238,33 @@ class AstBuilder:
     # ---- header -----------------------------------------------------------------------------
 
     def title(self, children: list[Any]) -> _Title:
-        text = str(children[1])[1:].strip()
+        text = children[1].value[1:].strip()
         if len(text) >= 2 and text[0] == text[-1] and text[0] in "'\"":
             text = text[1:-1]
         return _Title(text)
 
     def header_prop(self, children: list[Any]) -> _Prop:
         key, value = children
-        text = str(value).strip()
+        text = value.value.strip()
         if len(text) >= 2 and text[0] == text[-1] == "'":
             text = text[1:-1]
-        return _Prop((str(key).upper(), text))
+        return _Prop((key.value.upper(), text))
 
     def flag(self, children: list[Any]) -> _Flag:
-        return _Flag(str(children[0]).upper())
+        return _Flag(children[0].value.upper())
 
     def attributes(self, children: list[Any]) -> _Attributes:
         return _Attributes(child for child in children if isinstance(child, ast.Attribute))
 
     def attribute(self, children: list[Any]) -> ast.Attribute:
         name, value = children
-        return ast.Attribute(str(name), str(value)[1:-1], loc=span(name, value))
+        return ast.Attribute(name.value, value.value[1:-1], loc=span(name, value))
 
     # ---- declarations -----------------------------------------------------------------------
 
     def var_section(self, children: list[Any]) -> ast.VarSection:
-        keyword: Token = children[0]
-        words = str(keyword).upper().split()
+        keyword: AnyToken = children[0]
+        words = keyword.value.upper().split()
         decls = [child for child in children if isinstance(child, ast.VarDecl | ast.Bad)]
         modifier = words[1] if len(words) > 1 else None
         return ast.VarSection(words[0], decls, modifier, loc=span(keyword, children[-1]))
@@ -235,12 +274,12 @@ class AstBuilder:
         return ast.ConstSection(decls, loc=span(children[0], children[-1]))
 
     def label_section(self, children: list[Any]) -> ast.LabelSection:
-        names = [str(child) for child in children if child.type == "IDENT"]
+        names = [child.value for child in children if child.type == "IDENT"]
         return ast.LabelSection(names, loc=span(children[0], children[-1]))
 
     def const_decl(self, children: list[Any]) -> ast.ConstDecl:
         name, value = children
-        return ast.ConstDecl(str(name), value, loc=span(name, value))
+        return ast.ConstDecl(name.value, value, loc=span(name, value))
 
     def var_decl(self, children: list[Any]) -> ast.VarDecl:
         names = [child for child in children if isinstance(child, ast.DeclName)]
@@ -248,8 +287,8 @@ class AstBuilder:
         type_node: ast.TypeNode | None = None
         init: list[ast.InitItem] | None = None
         for index, child in enumerate(children):
-            if isinstance(child, Token) and child.type == "AT":
-                at_name = str(children[index + 1])
+            if isinstance(child, _TOKENS) and child.type == "AT":
+                at_name = children[index + 1].value
             elif isinstance(child, ast.NamedType | ast.ArrayType | ast.StructType):
                 type_node = child
             elif isinstance(child, list):
@@ -258,30 +297,30 @@ class AstBuilder:
         return ast.VarDecl(names, type_node, init, at_name, loc=span(names[0], children[-1]))
 
     def decl_name(self, children: list[Any]) -> ast.DeclName:
-        token: Token = children[0]
+        token: AnyToken = children[0]
         attributes = list(children[1]) if len(children) > 1 else []
         quoted = token.type == "QSYM"
-        text = str(token)[1:-1] if quoted else str(token)
+        text = token.value[1:-1] if quoted else token.value
         return ast.DeclName(text, quoted, attributes, loc=token_loc(token))
 
     def init_list(self, children: list[Any]) -> list[ast.InitItem]:
         return list(children)
 
     def init_repeat(self, children: list[Any]) -> ast.InitRepeat:
-        count: Token = children[0]
+        count: AnyToken = children[0]
         values = children[1] if len(children) > 1 else []
-        return ast.InitRepeat(str(count), values, loc=span(count, children[-1]))
+        return ast.InitRepeat(count.value, values, loc=span(count, children[-1]))
 
     def init_brackets(self, children: list[Any]) -> ast.InitList:
         values: list[ast.InitItem] = children[0]
         return ast.InitList(values, loc=span(values[0], values[-1]))
 
     def named_type(self, children: list[Any]) -> ast.NamedType:
-        token: Token = children[0]
+        token: AnyToken = children[0]
         if token.type == "QSYM":
-            return ast.NamedType(str(token)[1:-1], quoted=True, loc=token_loc(token))
+            return ast.NamedType(token.value[1:-1], quoted=True, loc=token_loc(token))
         length = children[1] if len(children) > 1 else None
-        text = str(token)
+        text = token.value
         if token.type == "ADDR":
             text = text.replace(" ", "").replace("\t", "")
         return ast.NamedType(text, length=length, loc=span(token, children[-1]))
@@ -309,7 +348,7 @@ class AstBuilder:
     # ---- statements -------------------------------------------------------------------------
 
     def label(self, children: list[Any]) -> ast.Label:
-        return ast.Label(str(children[0]), loc=token_loc(children[0]))
+        return ast.Label(children[0].value, loc=token_loc(children[0]))
 
     def empty(self, children: list[Any]) -> ast.Empty:
         where = token_loc(children[0]) if children else ast.Loc(1, 1, 1, 1)
@@ -317,14 +356,15 @@ class AstBuilder:
 
     def assign(self, children: list[Any]) -> ast.Assign:
         target, value = children
-        return ast.Assign(target, value, span(target, value))
+        return ast.Assign(target, value, _join(target, value))
 
     def call_stmt(self, children: list[Any]) -> ast.CallStmt:
         call: ast.Call = children[0]
         return ast.CallStmt(call, call.loc)
 
-    def stmts(self, children: list[Any]) -> _Stmts:
-        return _Stmts(_stmts(children))
+    def stmts(self, children: list[Any]) -> list[ast.Stmt]:
+        """A new plain list, which the statement holding it keeps as its body (no copy)."""
+        return _stmts(children)
 
     def code(self, children: list[Any]) -> _Code:
         found = _Code(_stmts(children[:1]))
@@ -339,30 +379,30 @@ class AstBuilder:
 
     def if_stmt(self, children: list[Any]) -> ast.If:
         keyword, condition, _then, body = children[:4]
-        branches = [ast.IfBranch(condition, list(body), loc=span(keyword, condition))]
+        branches = [ast.IfBranch(condition, body, loc=span(keyword, condition))]
         orelse: list[ast.Stmt] | None = None
         for child in children[4:]:
             if isinstance(child, ast.IfBranch):
                 branches.append(child)
             elif isinstance(child, _Else):
-                orelse = list(child)
+                orelse = child.body
         return ast.If(branches, orelse, loc=span(keyword, children[-1]))
 
     def elsif(self, children: list[Any]) -> ast.IfBranch:
         keyword, condition, _then, body = children
-        return ast.IfBranch(condition, list(body), loc=span(keyword, condition))
+        return ast.IfBranch(condition, body, loc=span(keyword, condition))
 
     def else_part(self, children: list[Any]) -> _Else:
         return _Else(children[-1])
 
     def case_stmt(self, children: list[Any]) -> ast.Case:
         branches = [child for child in children if isinstance(child, ast.CaseBranch)]
-        orelse = next((list(child) for child in children if isinstance(child, _Else)), None)
+        orelse = next((child.body for child in children if isinstance(child, _Else)), None)
         return ast.Case(children[1], branches, orelse, loc=span(children[0], children[-1]))
 
     def case_branch(self, children: list[Any]) -> ast.CaseBranch:
         values = [child for child in children if isinstance(child, ast.CaseValue)]
-        return ast.CaseBranch(values, list(children[-1]), loc=span(values[0], values[-1]))
+        return ast.CaseBranch(values, children[-1], loc=span(values[0], values[-1]))
 
     def case_else(self, children: list[Any]) -> _Else:
         return _Else(children[-1])
@@ -376,19 +416,19 @@ class AstBuilder:
         return ast.Literal(value.kind, "-" + value.text, loc=span(minus, value))
 
     def for_stmt(self, children: list[Any]) -> ast.For:
-        parts = [child for child in children if not isinstance(child, Token)]
+        parts = [child for child in children if not isinstance(child, _TOKENS)]
         step = parts[3] if len(parts) == 5 else None
         return ast.For(
-            parts[0], parts[1], parts[2], step, list(parts[-1]), loc=span(children[0], children[-1])
+            parts[0], parts[1], parts[2], step, parts[-1], loc=span(children[0], children[-1])
         )
 
     def while_stmt(self, children: list[Any]) -> ast.While:
         keyword, condition, _do, body = children[:4]
-        return ast.While(condition, list(body), loc=span(keyword, children[-1]))
+        return ast.While(condition, body, loc=span(keyword, children[-1]))
 
     def repeat_stmt(self, children: list[Any]) -> ast.Repeat:
         keyword, body, _until, condition = children[:4]
-        return ast.Repeat(list(body), condition, loc=span(keyword, children[-1]))
+        return ast.Repeat(body, condition, loc=span(keyword, children[-1]))
 
     def exit_stmt(self, children: list[Any]) -> ast.Exit:
         return ast.Exit(loc=token_loc(children[0]))
@@ -400,12 +440,12 @@ class AstBuilder:
         return ast.Return(loc=token_loc(children[0]))
 
     def goto_stmt(self, children: list[Any]) -> ast.Goto:
-        return ast.Goto(str(children[1]), loc=span(children[0], children[1]))
+        return ast.Goto(children[1].value, loc=span(children[0], children[1]))
 
     def region(self, children: list[Any]) -> ast.Region:
-        head: Token = children[0]
-        title = str(head)[len("REGION") :].strip()
-        return ast.Region(title, list(children[1]), loc=span(head, children[-1]))
+        head: AnyToken = children[0]
+        title = head.value[len("REGION") :].strip()
+        return ast.Region(title, children[1], loc=span(head, children[-1]))
 
     def bad(self, children: list[Any]) -> ast.Bad:
         return ast.Bad(loc=token_loc(children[0]))
@@ -414,31 +454,37 @@ class AstBuilder:
 
     def expr(self, children: list[Any]) -> ast.Expr:
         """A flat ``operand (op operand)+`` list → the ``Binary`` tree of S7-SCL precedence
-        (precedence climbing; every level is left-associative)."""
+        (operator-precedence parsing; every level is left-associative)."""
+        operand = children[0]
         if len(children) == 3:  # one operator: the common case
-            left, only, right = children
-            return ast.Binary(str(only).upper(), left, right, span(left, right))
-        operands: list[Any] = [children[0]]
-        ops: list[tuple[int, Token]] = []  # with their levels
+            return _binary(children[1], operand, children[2])
+        if len(children) == 5:  # two: the next most common
+            _first, one, middle, two, last = children
+            if _LEVEL[one.type] >= _LEVEL[two.type]:
+                return _binary(two, _binary(one, operand, middle), last)
+            return _binary(one, operand, _binary(two, middle, last))
+        pending: list[tuple[int, AnyToken, Any]] = []  # operators waiting for their right operand
         for position in range(1, len(children), 2):
-            op: Token = children[position]
+            op: AnyToken = children[position]
             level = _LEVEL[op.type]
-            while ops and ops[-1][0] >= level:
-                _reduce(operands, ops.pop()[1])
-            ops.append((level, op))
-            operands.append(children[position + 1])
-        while ops:
-            _reduce(operands, ops.pop()[1])
-        found: ast.Expr = operands[0]
+            while pending and pending[-1][0] >= level:
+                _level, waiting, left = pending.pop()
+                operand = _binary(waiting, left, operand)
+            pending.append((level, op, operand))
+            operand = children[position + 1]
+        while pending:
+            _level, waiting, left = pending.pop()
+            operand = _binary(waiting, left, operand)
+        found: ast.Expr = operand
         return found
 
     def binary(self, children: list[Any]) -> ast.Binary:
         left, op, right = children
-        return ast.Binary(str(op).upper(), left, right, span(left, right))
+        return ast.Binary(op.value.upper(), left, right, span(left, right))
 
     def unary(self, children: list[Any]) -> ast.Unary:
         op, operand = children
-        return ast.Unary(str(op).upper(), operand, loc=span(op, operand))
+        return ast.Unary(op.value.upper(), operand, loc=span(op, operand))
 
     def paren(self, children: list[Any]) -> ast.Paren:
         inner = children[0]
@@ -448,10 +494,8 @@ class AstBuilder:
         )
 
     def literal(self, children: list[Any]) -> ast.Literal:
-        token: Token = children[0]
-        kind = "BOOL" if token.type in ("TRUE", "FALSE") else token.type
-        text = str(token).upper() if kind == "BOOL" else str(token)
-        return ast.Literal(kind, text, token_loc(token))
+        token: AnyToken = children[0]
+        return literal_node(token.type, token.value, token_loc(token))
 
     def call(self, children: list[Any]) -> ast.Call:
         callee = children[0]
@@ -465,42 +509,55 @@ class AstBuilder:
 
     def named(self, children: list[Any]) -> ast.Arg:
         name, value = children
-        return ast.Arg(str(name), value, loc=span(name, value))
+        return ast.Arg(name.value, value, loc=span(name, value))
 
     def output(self, children: list[Any]) -> ast.Arg:
         name, value = children
-        return ast.Arg(str(name), value, output=True, loc=span(name, value))
+        return ast.Arg(name.value, value, output=True, loc=span(name, value))
 
     def name(self, children: list[Any]) -> ast.Name:
-        token: Token = children[0]
-        return ast.Name(str(token), token_loc(token))
+        token: AnyToken = children[0]
+        return name_node(token.type, token.value, token_loc(token))
 
     def local(self, children: list[Any]) -> ast.Local:
-        return ast.Local(str(children[0])[1:], token_loc(children[0]))
+        token: AnyToken = children[0]
+        return local_node(token.type, token.value, token_loc(token))
 
     def symbol(self, children: list[Any]) -> ast.Symbol:
-        return ast.Symbol(str(children[0])[1:-1], loc=token_loc(children[0]))
+        token: AnyToken = children[0]
+        return symbol_node(token.type, token.value, token_loc(token))
 
     def address(self, children: list[Any]) -> ast.Address | ast.Name:
-        token = children[0]
-        if _NOT_AN_ADDRESS.match(token):  # ``m1 : INT``: an I/Q/M bit needs ``.bit``
-            return ast.Name(str(token), loc=token_loc(token))
-        return ast.Address(_compact(token), loc=token_loc(token))
+        token: AnyToken = children[0]
+        return address_node(token.type, token.value, token_loc(token))
+
+    # The rules of one token whose node the fast parse (``nasaq.lang.scl.lalr``) makes straight
+    # from the token's kind, text and position, without a ``Token``: by method name, the
+    # function the method calls too.
+    token_rules: ClassVar[dict[str, Callable[[str, str, ast.Loc], Any]]] = {
+        "literal": literal_node,
+        "name": name_node,
+        "local": local_node,
+        "symbol": symbol_node,
+        "address": address_node,
+    }
 
     def indexed_address(self, children: list[Any]) -> ast.IndexedAddress:
-        area: Token = children[0]
+        area: AnyToken = children[0]
         return ast.IndexedAddress(_compact(area), list(children[1:]), loc=span(area, children[-1]))
 
     def member(self, children: list[Any]) -> ast.Member:
         base, token = children
         part: ast.Name | ast.Symbol | ast.Address
-        if token.type == "QSYM":
-            part = self.symbol([token])
-        elif token.type == "DB_ADDR":
-            part = self.address([token])
+        kind = token.type
+        where = token_loc(token)
+        if kind == "QSYM":
+            part = symbol_node(kind, token.value, where)
+        elif kind == "DB_ADDR":
+            part = address_node(kind, token.value, where)
         else:
-            part = self.name([token])
-        return ast.Member(base, part, span(base, token))
+            part = name_node(kind, token.value, where)
+        return ast.Member(base, part, _join(base, part))
 
     def indexed_member(self, children: list[Any]) -> ast.Member:
         base = children[0]
@@ -533,20 +590,35 @@ _LEVEL = {
 }
 
 
-def _reduce(operands: list[Any], op: Token) -> None:
-    """The last two operands → their ``Binary`` by ``op``."""
-    right = operands.pop()
-    left = operands[-1]
-    operands[-1] = ast.Binary(str(op).upper(), left, right, span(left, right))
+def _binary(op: AnyToken, left: Any, right: Any) -> ast.Binary:
+    """``left op right`` (operands are nodes)."""
+    start = left.loc
+    end = right.loc
+    text: str = op.value
+    return ast.Binary(text.upper(), left, right, _new(_Loc, (start[0], start[1], end[2], end[3])))
 
 
-class _Else(list[ast.Stmt]):
-    pass
+def _join(first: Any, last: Any) -> ast.Loc:
+    """``span`` of two expression nodes (not tokens, lists or blocks), in fewer steps."""
+    start = first.loc
+    end = last.loc
+    found: ast.Loc = _new(_Loc, (start[0], start[1], end[2], end[3]))
+    return found
+
+
+class _Else:
+    """An ELSE's statements (``else_part``, ``case_else``)."""
+
+    __slots__ = ("body",)
+
+    def __init__(self, body: list[ast.Stmt]) -> None:
+        self.body = body
 
 
 def _is(child: Any, kind: str) -> bool:
-    return isinstance(child, Token) and child.type == kind
+    return isinstance(child, _TOKENS) and child.type == kind
 
 
-def _compact(token: Token) -> str:
-    return str(token).replace(" ", "").replace("\t", "")
+def _compact(token: AnyToken) -> str:
+    text: str = token.value
+    return text.replace(" ", "").replace("\t", "")

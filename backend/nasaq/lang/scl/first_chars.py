@@ -251,6 +251,15 @@ class Shapes:
             self.firsts[name] = first_chars(self._parse(name, regexp))
         return self.firsts[name]
 
+    def tests_first(self, name: str, regexp: str) -> bool:
+        """Whether the compiled expression starts with a test of one character that an
+        alternation makes before trying it (a literal or a class, without case folding)."""
+        parsed = self._parse(name, regexp)
+        items = list(parsed)
+        if not items or parsed.state.flags & re.IGNORECASE:
+            return False
+        return items[0][0] in (_sre.LITERAL, _sre.IN)
+
     def second(self, name: str, regexp: str, chars: Starts) -> Starts | None:
         """What may follow a first character of ``chars`` (None: the match may end there;
         nothing: it cannot start so)."""

@@ -9,7 +9,9 @@ scanner at every position (the same terminals in the same order) in one match:
   terminal is skipped only where no terminal Lark tries before it matches (``(?!...)``), as
   Lark's alternation takes the first that matches (a header value may begin with a blank);
 - then only the terminals that may start with the next character are tried (a lookahead on
-  the character selects them; each keeps Lark's order).
+  the character selects them; each keeps Lark's order). An empty group after each terminal
+  tells which matched: an alternative that starts with a plain character (``;``) is then
+  dismissed by ``re`` on that character, without running a lookahead.
 
 What a terminal may start with is read from its parsed regular expression, erring towards "it
 may" (``nasaq.lang.scl.first_chars``). Where the fast parse cannot be sure to give what Lark
@@ -23,6 +25,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from operator import itemgetter
+from sys import intern
 
 from lark.lexer import BasicLexer, ContextualLexer, TerminalDef, UnlessCallback
 
@@ -42,34 +46,63 @@ Group = tuple[str, "Words | None", bool, bool]
 class Scanner:
     """What one parser state's lexer needs per token."""
 
-    match: Callable[[str, int], re.Match[str] | None]  # skip ignored text, then one terminal
+    # Skips ignored text (group 1), then matches one terminal, followed by its empty group.
+    match: Callable[[str, int], re.Match[str] | None]
     rest: re.Pattern[str]  # ignored text (to check that it runs to the end of the source)
-    groups: list[Group | None]  # by the number of the group that matched (``lastindex``)
+    groups: list[Group | None]  # by the number of the terminal's group (``lastindex``)
 
 
 class Words(dict[str, str]):
-    """Lark's ``UnlessCallback`` (a name that spells a keyword of the state is that keyword)
-    and the parse driver's retyping of reserved words (then a syntax error: ``""``) as one
-    dictionary of upper-case words, for ASCII text (``ascii``); ``kind_of`` is Lark's own way."""
+    """The kind a name's text makes it, by the text as written: Lark's ``UnlessCallback`` (a
+    name that spells a keyword of the state is that keyword) and the parse driver's retyping of
+    reserved words (then a syntax error: ``""``). Each text is worked out once
+    (``__missing__``) and remembered, up to ``LIMIT`` of them: the names of a program repeat,
+    and a look-up is cheaper than upper-casing the text."""
+
+    LIMIT = 10_000
 
     def __init__(self, kind: str, unless: UnlessCallback | None, reserved: frozenset[str]):
-        super().__init__(dict.fromkeys(reserved, ""))
-        self.kind = kind
+        super().__init__()
+        self.kind = intern(kind)
         self.unless = unless
         self.reserved = reserved
+        self.upper: dict[str, str] = dict.fromkeys(reserved, "")  # for ASCII text (``ascii``)
         self.ascii = True
         for terminal in unless.scanner.terminals if unless is not None else []:
             pattern = terminal.pattern
             if pattern.flags != {"i"} or not pattern.value.isascii():
                 self.ascii = False  # not a case-insensitive ASCII word: match as Lark does
-            self[pattern.value.upper()] = terminal.name
+            self.upper[pattern.value.upper()] = intern(terminal.name)
+
+    def __missing__(self, value: str) -> str:
+        kind = self.kind_of(value)
+        if len(self) < self.LIMIT:
+            self[value] = kind
+        return kind
 
     def kind_of(self, value: str) -> str:
         """The kind ``value`` is (``""``: a reserved word)."""
+        if self.ascii and value.isascii():
+            return self.upper.get(value.upper(), self.kind)
         found = self.unless.scanner.fullmatch(value) if self.unless is not None else None
         if found is not None:
-            return str(found)
+            return intern(str(found))
         return "" if value.upper() in self.reserved else self.kind
+
+
+class FastToken:
+    """A token of the fast parse: what the AST builder reads of Lark's ``Token`` (its kind,
+    text and position) in a plain object, cheaper to make than a ``Token`` (a ``str`` copy of
+    the text with eight fields)."""
+
+    __slots__ = ("column", "end_column", "end_line", "line", "type", "value")
+
+    type: str
+    value: str
+    line: int
+    column: int
+    end_line: int
+    end_column: int
 
 
 # ---- scanners --------------------------------------------------------------------------------
@@ -112,6 +145,16 @@ def _guard(terminal: TerminalDef, chars: Starts, shapes: Shapes) -> str | None:
     return f"(?=[\\s\\S]{char_class(sorted(second))})"
 
 
+def _alone(terminal: TerminalDef, chars: Starts, shapes: Shapes) -> bool:
+    """Whether ``terminal`` is the only one tried at ``chars``, starts with no other character
+    and starts with a test of one character that ``re`` makes before trying an alternative
+    (``;``): then it needs no lookahead to be tried only there."""
+    regexp = terminal.pattern.to_regexp()
+    return shapes.first(terminal.name, regexp) == chars and shapes.tests_first(
+        terminal.name, regexp
+    )
+
+
 def _dispatch(kept: list[TerminalDef], shapes: Shapes) -> tuple[str, dict[str, str]]:
     """The alternation of ``kept`` per first character, and which group is which terminal."""
     starts = [
@@ -122,7 +165,7 @@ def _dispatch(kept: list[TerminalDef], shapes: Shapes) -> tuple[str, dict[str, s
         candidates = tuple(terminal for terminal, first in starts if not first.isdisjoint(chars))
         if candidates:
             classes.setdefault(candidates, []).extend(chars)
-    parts: list[str] = []
+    parts: list[tuple[int, str]] = []
     kinds: dict[str, str] = {}
     for candidates, chars in classes.items():
         groups: list[str] = []
@@ -132,10 +175,22 @@ def _dispatch(kept: list[TerminalDef], shapes: Shapes) -> tuple[str, dict[str, s
             if guard is not None:
                 group = f"t{len(kinds)}"
                 kinds[group] = terminal.name
-                groups.append(f"{guard}(?P<{group}>{terminal.pattern.to_regexp()})")
-        if groups:
-            parts.append(f"(?={char_class(chars)})(?:{'|'.join(groups)})")
-    return "|".join(parts) or "(?!)", kinds
+                groups.append(f"{guard}(?:{terminal.pattern.to_regexp()})(?P<{group}>)")
+        if len(candidates) == 1 and _alone(candidates[0], frozenset(chars), shapes):
+            parts.append((0, groups[0]))  # its first character is the test
+        elif groups:
+            parts.append((_rank(chars), f"(?={char_class(chars)})(?:{'|'.join(groups)})"))
+    parts.sort(key=itemgetter(0))  # the classes are disjoint: any order gives the same match
+    return "|".join(part for _, part in parts) or "(?!)", kinds
+
+
+def _rank(chars: list[str]) -> int:
+    """Where a class of first characters goes in the alternation: after the alternatives ``re``
+    dismisses on their first character, the names (the commonest tokens), then numbers, then
+    the rest."""
+    if any(char.isascii() and char.isalpha() for char in chars):
+        return 1
+    return 2 if any(char.isdigit() for char in chars) else 3
 
 
 def _words(
@@ -170,10 +225,10 @@ def _scanner(
     skip = _skip(terminals, ignored, shapes)
     dispatch, kinds = _dispatch(kept, shapes)
     words = _words(lexer, kept, reserved)
-    pattern = re.compile(f"{skip}(?:{dispatch})", lexer.g_regex_flags)
+    pattern = re.compile(f"({skip})(?:{dispatch})", lexer.g_regex_flags)
     groups: list[Group | None] = [None] * (pattern.groups + 1)  # a terminal's own groups: None
     for group, kind in kinds.items():
-        info = (kind, words.get(kind), kind not in dropped, kind in lexer.newline_types)
+        info = (intern(kind), words.get(kind), kind not in dropped, kind in lexer.newline_types)
         groups[pattern.groupindex[group]] = info
     return Scanner(match=pattern.match, rest=re.compile(skip, lexer.g_regex_flags), groups=groups)
 

@@ -17,6 +17,7 @@ import pytest
 from nasaq.lang.scl import lalr
 from nasaq.lang.scl.bench import dense, program
 from nasaq.lang.scl.grammar import build_parser, parser
+from nasaq.lang.scl.lexer import Words
 from nasaq.lang.scl.parse import _RESERVED, parse_source
 
 HERE = Path(__file__).parent
@@ -137,3 +138,33 @@ def test_a_parser_with_recording_callbacks_takes_the_driver() -> None:
     lark._callbacks.update({rule: (lambda children: children) for rule in lark._callbacks})
     assert lalr.parse("FUNCTION FC1 : VOID\nBEGIN\nEND_FUNCTION\n", lark, _RESERVED) is None
     assert lalr.parse("FUNCTION FC1 : VOID\nBEGIN\nEND_FUNCTION\n", parser(), _RESERVED)
+
+
+ERRORS_AFTER_ONE_TOKEN = [
+    # a name, a number or a symbol made into its node at once (its state reduces it whatever
+    # follows), then a token no state accepts: the error is still found, by the driver
+    "FUNCTION FC1 : VOID\nBEGIN\n  x := a b;\nEND_FUNCTION\n",
+    "FUNCTION FC1 : VOID\nBEGIN\n  x := 1 2;\nEND_FUNCTION\n",
+    'FUNCTION FC1 : VOID\nBEGIN\n  x := "S" #y;\nEND_FUNCTION\n',
+    "FUNCTION FC1 : VOID\nBEGIN\n  IF a b THEN x := TRUE; END_IF;\nEND_FUNCTION\n",
+    "FUNCTION FC1 : VOID\nBEGIN\n  x := M1.0 IF;\nEND_FUNCTION\n",
+]
+
+
+@pytest.mark.parametrize("text", ERRORS_AFTER_ONE_TOKEN)
+def test_an_error_after_a_node_made_at_its_token_goes_to_the_driver(text: str) -> None:
+    assert lalr.parse(text, parser(), _RESERVED) is None
+    assert not assert_same("error.scl", text)
+
+
+def test_names_past_the_remembered_ones_are_read_the_same(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The kind of a name's text is remembered up to ``Words.LIMIT`` texts; past that it is
+    worked out each time, with the same answers."""
+    monkeypatch.setattr(Words, "LIMIT", 2)
+    text = program(60)
+    lark = build_parser()  # tables of its own: nothing remembered yet
+    fast = parse_source("limit.scl", text, lark)
+    driver = parse_source("limit.scl", text, lark, fast=False)
+    assert not driver.diagnostics
+    assert dump(fast.source) == dump(driver.source)
+    assert lalr.parse(text, lark, _RESERVED) is not None
