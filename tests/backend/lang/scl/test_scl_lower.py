@@ -9,42 +9,13 @@ from __future__ import annotations
 import math
 
 import pytest
+from scl_run import build, ob1, read, real
 
 from nasaq.cpu import Cpu
-from nasaq.headless.addresses import as_real, parse_address, signed
+from nasaq.headless.addresses import parse_address
 from nasaq.ir import Direct, Origin
 from nasaq.lang.stl import SourceFile, compile_sources
 from nasaq.lang.stl.format import format_block
-
-
-def build(source: str, *more: SourceFile) -> Cpu:
-    result = compile_sources([SourceFile("prog.scl", source), *more])
-    errors = [f"{d.code} {d.span} {d.message}" for d in result.diagnostics if d.severity == "error"]
-    assert not errors, errors
-    cpu = Cpu(result.program, cycle_ms=10)
-    cpu.start()
-    assert cpu.mode == "RUN", cpu.stop_reason
-    cpu.run(1)
-    assert cpu.mode == "RUN", cpu.stop_reason
-    return cpu
-
-
-def read(cpu: Cpu, text: str) -> int:
-    address = parse_address(text)
-    assert isinstance(address, Direct)
-    return signed(cpu.read(address), address.width)
-
-
-def real(cpu: Cpu, text: str) -> float:
-    address = parse_address(text)
-    assert isinstance(address, Direct)
-    return as_real(cpu.read(address))
-
-
-def ob1(body: str, temps: str = "") -> str:
-    declared = f"VAR_TEMP\n{temps}\nEND_VAR\n" if temps else ""
-    return f"ORGANIZATION_BLOCK OB1\n{declared}BEGIN\n{body}\nEND_ORGANIZATION_BLOCK\n"
-
 
 # ---- expressions ----------------------------------------------------------------------------
 
