@@ -16,7 +16,8 @@ FRONTEND_SOURCES := $(shell find frontend/src frontend/public -type f 2>/dev/nul
 help:
 	@echo "make run    install what is missing, then serve the IDE at http://127.0.0.1:8000"
 	@echo "make test   install what is missing (incl. Chromium), then run every test suite"
-	@echo "make bench        STL instructions/s of the CPU; SCL compile lines/s and statements/s"
+	@echo "make bench        STL instructions/s of the CPU; SCL compile lines/s and statements/s;"
+	@echo "                  monitoring latency, 100 sessions, block status slowdown"
 	@echo "make conformance  awlsim's self-checking STL programs (downloads awlsim from PyPI)"
 	@echo "make install | make lock (re-pin Python dependencies) | make clean"
 
@@ -47,6 +48,7 @@ test: install chromium
 bench: install
 	$(BIN)/python -m nasaq.cpu.bench
 	$(BIN)/python -m nasaq.lang.scl.compile_bench
+	$(BIN)/python -m nasaq.monitor.bench
 
 conformance: install
 	$(BIN)/python tests/conformance/awlsim_suite.py

@@ -34,6 +34,20 @@ class Settings(BaseSettings):
         description="Folder of the built front end served at '/'.",
     )
     log_level: str = Field(default="info", description="Log level of the server.")
+    session_workers: int | None = Field(
+        default=None,
+        ge=1,
+        description="Processes that run simulation sessions; empty means one per CPU core.",
+    )
+    max_sessions: int = Field(
+        default=200, ge=1, description="Simulation sessions the server runs at most at once."
+    )
+    session_idle_seconds: float = Field(
+        default=900, gt=0, description="A session with no client for this long is closed."
+    )
+    slow_client_seconds: float = Field(
+        default=10, gt=0, description="A monitoring client that reads nothing this long is dropped."
+    )
 
     @property
     def effective_database_url(self) -> str:

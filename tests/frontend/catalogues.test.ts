@@ -60,7 +60,14 @@ describe('translation catalogues', () => {
       .map(([key]) => key);
     // Only mnemonics and pure placeholders may stay identical (RUN, STOP, HOLD, "{{field}}: {{reason}}").
     expect(same.sort()).toEqual(
-      ['cpu.mode.hold', 'cpu.mode.run', 'cpu.mode.stop', 'problems.invalid_request'].sort(),
+      [
+        'cpu.mode.hold',
+        'cpu.mode.run',
+        'cpu.mode.stop',
+        'problems.invalid_request',
+        'problems.mon_bad_value',
+        'problems.mon_unknown_target',
+      ].sort(),
     );
   });
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import asyncio
+import contextlib
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 
@@ -9,10 +11,12 @@ from fastapi import APIRouter, FastAPI
 from fastapi.middleware.gzip import GZipMiddleware
 
 from nasaq import __version__
-from nasaq.api import health, projects
+from nasaq.api import health, projects, sessions
 from nasaq.api.docs import install_docs
 from nasaq.api.errors import install_error_handlers
 from nasaq.api.frontend import install_frontend
+from nasaq.monitor.errors import MonitorError
+from nasaq.monitor.pool import WorkerPool
 from nasaq.settings import Settings, get_settings
 from nasaq.storage.database import create_db_engine, session_factory
 from nasaq.storage.migrate import upgrade_to_head
@@ -28,9 +32,14 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         engine = create_db_engine(settings)
         app.state.engine = engine
         app.state.sessions = session_factory(engine)
+        simulations: WorkerPool = app.state.simulations
+        simulations.start(asyncio.get_running_loop())
+        reaper = asyncio.create_task(_reap(simulations))
         try:
             yield
         finally:
+            reaper.cancel()
+            await asyncio.to_thread(simulations.stop)
             engine.dispose()
 
     app = FastAPI(
@@ -43,13 +52,25 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         lifespan=lifespan,
     )
     app.state.settings = settings
+    app.state.simulations = WorkerPool(
+        settings.session_workers, settings.max_sessions, settings.session_idle_seconds
+    )
     app.add_middleware(GZipMiddleware, minimum_size=1024)
     install_error_handlers(app)
 
     api = APIRouter(prefix="/api")
     api.include_router(health.router)
     api.include_router(projects.router)
+    api.include_router(sessions.router)
     app.include_router(api)
     install_docs(app)
     install_frontend(app, settings.frontend_dist)  # last: its catch-all route must come after
     return app
+
+
+async def _reap(simulations: WorkerPool) -> None:
+    """Closes abandoned simulation sessions once a minute."""
+    while True:
+        await asyncio.sleep(min(60.0, simulations.idle_seconds / 2))
+        with contextlib.suppress(MonitorError):  # a worker ended meanwhile; it was replaced
+            await simulations.reap()

@@ -43,6 +43,11 @@ class Cpu:
             program, profile, cycle_ms, watchdog_ms, test_ops, clock_memory_byte=clock_memory_byte
         )
 
+    @property
+    def engine(self) -> Engine:
+        """The operating system under the API, for the monitor (instrumented blocks, holds)."""
+        return self._engine
+
     # -- operation -----------------------------------------------------------------------------
     def start(self, cold: bool = False) -> None:
         """Warm restart: clear non-retentive data, run OB100 if loaded, go to RUN. With ``cold``,

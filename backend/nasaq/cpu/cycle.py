@@ -116,6 +116,7 @@ class Engine:
         self.stop_code: str | None = None
         self.stopped_by_program = False
         self.diagnostic_buffer: list[DiagnosticEntry] = []
+        self.diagnostic_count = 0  # entries ever made (the buffer keeps the last 1000)
         self.forced_inputs: dict[tuple[int, int], int] = {}
         self.forced_outputs: dict[tuple[int, int], int] = {}
         self.scans = 0
@@ -295,6 +296,7 @@ class Engine:
         self.diagnostic_buffer.append(
             DiagnosticEntry(self.m.now, error.code, error.message, block, network, line)
         )
+        self.diagnostic_count += 1
         del self.diagnostic_buffer[:-1000]
 
     def _stop(self, error: CpuError) -> None:

@@ -54,6 +54,8 @@ class Loader:
         self.watchdog = watchdog
         self.calls = calls
         self.cache: dict[tuple[BlockKind, int], Compiled | None] = {}
+        self.plain: dict[tuple[BlockKind, int], Compiled | None] = {}  # the fast compilations
+        self.debug: dict[tuple[BlockKind, int], Compiled | None] = {}  # with per-instruction hooks
         self.by_filename: dict[str, Compiled] = {}
         dbs = memory.dbs
 
@@ -107,7 +109,40 @@ class Loader:
                 self._link(compiled)
                 self.by_filename[compiled.filename] = compiled
         self.cache[key] = compiled
+        self.plain[key] = compiled
         return compiled
+
+    def instrumented(
+        self,
+        kind: BlockKind,
+        number: int,
+        make_hooks: Callable[[Compiled], tuple[Callable[..., None], Callable[..., None]]],
+    ) -> Compiled | None:
+        """The debugger's compilation of a code block (None for data blocks, IEC library FCs
+        and missing blocks); ``make_hooks(compiled)`` gives its ``_B`` and ``_H`` (see
+        codegen.compiler)."""
+        key = (kind, number)
+        if key in self.debug:
+            return self.debug[key]
+        plain = self.get(kind, number)
+        compiled = None
+        if plain is not None and plain.line_map:  # library FCs (Python bodies) have no line map
+            compiled = compile_block(
+                plain.block, self.program, self.profile, self.bind, instrumented=True
+            )
+            self._link(compiled)
+            compiled.namespace["_B"], compiled.namespace["_H"] = make_hooks(compiled)
+            self.by_filename[compiled.filename] = compiled
+        self.debug[key] = compiled
+        return compiled
+
+    def select(self, kind: BlockKind, number: int, debug: bool) -> None:
+        """Calls from now on run the debug compilation (if there is one) or the fast one."""
+        key = (kind, number)
+        if key not in self.plain:
+            self.get(kind, number)
+        chosen = self.debug.get(key) if debug else None
+        self.cache[key] = chosen if chosen is not None else self.plain[key]
 
     def _link(self, compiled: Compiled) -> None:
         ns = compiled.namespace

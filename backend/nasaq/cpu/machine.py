@@ -6,6 +6,8 @@ exit and around calls, so these attributes are the truth only between blocks.
 
 from __future__ import annotations
 
+import operator
+
 from nasaq.cpu.errors import CpuError
 
 MCR_LEVELS = 8
@@ -79,7 +81,8 @@ class Machine:
         self.mcr = self.mcr_stack.pop()
 
     def save(self) -> tuple[object, ...]:
-        return tuple(getattr(self, name) for name in _SAVED)
+        saved: tuple[object, ...] = _SAVE(self)
+        return saved
 
     def restore(self, saved: tuple[object, ...]) -> None:
         for name, value in zip(_SAVED, saved, strict=True):
@@ -111,3 +114,4 @@ _SAVED = (
     "lstack",
     "priority",
 )
+_SAVE = operator.attrgetter(*_SAVED)  # one C call instead of 23 getattr (once per OB run)

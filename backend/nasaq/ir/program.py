@@ -77,6 +77,7 @@ class Program:
 
     blocks: dict[tuple[BlockKind, int], Block] = field(default_factory=dict)
     symbols: dict[str, str] = field(default_factory=dict)  # symbol name -> absolute address text
+    symbol_types: dict[str, str] = field(default_factory=dict)  # symbol name -> declared type
 
     def add(self, block: Block) -> None:
         self.blocks[(block.kind, block.number)] = block

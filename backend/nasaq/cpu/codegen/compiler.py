@@ -10,8 +10,11 @@
    Each basic block adds its instruction count to ``n`` once per entry; loop heads check ``n``
    against the watchdog limit.
 
-``instrumented`` is reserved for the debugger's second compilation (per-instruction hooks); the
-fast path never pays for it.
+``instrumented`` is the debugger's second compilation: before every instruction the block calls
+``_B(index, L, P, a1, a2, fc, rlo, sta, orb, os, ov, cc0, cc1, br, ar1, ar2, db, di)`` (where
+breakpoints and steps hold, so a value changed there is what the instruction reads) and after it
+``_H(...)`` with the registers as the instruction left them (every status bit computed, none
+folded away), which the block status records. The fast path never pays for either.
 """
 
 from __future__ import annotations
@@ -23,7 +26,7 @@ from typing import Any
 
 from nasaq.cpu.codegen.bit_logic import analyse_nesting
 from nasaq.cpu.codegen.calls import SYNC_IN, SYNC_OUT
-from nasaq.cpu.codegen.model import ALL, REGISTERS, Ctx, ErrorSite, Stmt, Term
+from nasaq.cpu.codegen.model import ALL, REGISTERS, STATUS, Ctx, ErrorSite, Stmt, Term
 from nasaq.cpu.codegen.registry import EMITTERS, TERMINATORS
 from nasaq.cpu.profile import Profile
 from nasaq.ir import Block, Program
@@ -100,13 +103,31 @@ def _emit_bb(ctx: Ctx, bb: _BB, entry: dict[str, int]) -> dict[str, int]:
         if ins.operand is None and ins.op in NEEDS_OPERAND:
             ctx.error("SIM522", op=ins.op, detail="without an operand")
             continue
+        if ctx.instrumented:
+            _emit_hook(ctx, i, "_B")
         try:
             emitter(ctx, ins)
         except Exception as exc:  # a simulator bug: the CPU reports SIM500 at this instruction
             raise EmitterError(ctx.block, i) from exc
+        if ctx.instrumented:
+            _emit_hook(ctx, i, "_H")
     bb.stmts = ctx.stmts
     bb.term = ctx.term or Term("fall")
     return ctx.known
+
+
+HOOK_REGISTERS = ("a1", "a2", *STATUS, "ar1", "ar2", "db", "di")
+
+
+def _emit_hook(ctx: Ctx, index: int, hook: str) -> None:
+    """The debugger's call before (``_B``) or after (``_H``) instruction ``index``: it reads every
+    register, so liveness keeps them all computed; registers the compiler knows as constants are
+    passed as those."""
+    known = ctx.known
+    args = ", ".join(str(known[r]) if r in known else r for r in HOOK_REGISTERS)
+    uses = [r for r in HOOK_REGISTERS if r not in known]
+    line = f"{hook}({index}, L, P, {args})"
+    ctx.stmts.append(Stmt([line], frozenset(), frozenset(uses), True, index))
 
 
 def _successors(bbs: list[_BB], b: int, at: dict[int, int]) -> list[int]:
@@ -433,7 +454,8 @@ def _assemble(
     w.add(2, f"if bb >= {n_bbs}: break")
     sync_out(1)
     source = "\n".join(w.lines) + "\n"
-    filename = f"<nasaq {block.kind.value}{block.number}>"
+    debug = " debug" if ctx.instrumented else ""
+    filename = f"<nasaq {block.kind.value}{block.number}{debug}>"
     namespace: dict[str, Any] = dict(bind)
     namespace.update(ctx.globals)
     code = compile(source, filename, "exec")

@@ -163,9 +163,12 @@ class _Compiler:
             file = _File(source.name, parsed, text.split("\n"))
             file.language = _language(file, self.mnemonics)
             self.files.append(file)
-        self.program.symbols = {
-            symbol.name: symbol.address for symbol in self.symbols.symbols.values()
-        }
+        self._publish_symbols()
+
+    def _publish_symbols(self) -> None:
+        table = self.symbols.symbols.values()
+        self.program.symbols = {symbol.name: symbol.address for symbol in table}
+        self.program.symbol_types = {symbol.name: symbol.type for symbol in table if symbol.type}
 
     def read_scl(self, source: SourceFile) -> None:
         text = decode(source.text)
@@ -227,9 +230,7 @@ class _Compiler:
             for info, _ in generated:  # after all are registered: a DB may name a later UDT
                 self.index.declare(info)
             registered += generated
-            self.program.symbols = {
-                symbol.name: symbol.address for symbol in self.symbols.symbols.values()
-            }
+            self._publish_symbols()
         registered += self.library_blocks(registered)
         return registered
 

@@ -1,0 +1,187 @@
+"""``/api/sessions``: simulation sessions (create by download, replace the program in STOP,
+diagnostic buffer, trend CSV, delete) and their monitoring WebSocket at ``/api/sessions/{id}/ws``
+(protocol: ``nasaq/monitor/PROTOCOL.md``)."""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal
+
+from fastapi import APIRouter, Query, Request, Response, WebSocket, status
+from pydantic import BaseModel, Field
+
+from nasaq.api.errors import ApiError, ApiErrorBody
+from nasaq.monitor.connection import Connection
+from nasaq.monitor.errors import MonitorError
+from nasaq.monitor.pool import WorkerPool
+from nasaq.monitor.protocol import CpuState, DiagnosticEntry, TimeModeName
+
+router = APIRouter(prefix="/sessions", tags=["simulation"])
+
+MAX_SOURCE_CHARS = 4 * 1024 * 1024
+_STATUS = {"MON609": 404, "MON610": 503, "MON611": 422, "MON616": 413, "MON607": 409}
+
+
+class Source(BaseModel):
+    name: str = Field(min_length=1, max_length=255, description="File name; .scl is SCL, else STL")
+    text: str = Field(max_length=MAX_SOURCE_CHARS)
+
+
+class SessionCreate(BaseModel):
+    sources: list[Source] = Field(min_length=1, max_length=500)
+    profile: Literal["S7-300", "S7-400"] = "S7-300"
+    cycle_ms: float = Field(default=10, ge=1, le=60_000)
+    time_mode: TimeModeName = "virtual"
+
+
+class Download(BaseModel):
+    sources: list[Source] = Field(min_length=1, max_length=500)
+
+
+class SessionOut(BaseModel):
+    id: str
+    blocks: list[str]
+    cpu: CpuState
+    clients: list[int] = Field(description="The connected sockets (their hello's client)")
+    websocket: str
+
+
+class DownloadOut(BaseModel):
+    changed: list[str] = Field(description="Blocks added, changed or removed by the download")
+
+
+_ERRORS: dict[int | str, dict[str, object]] = {
+    404: {"model": ApiErrorBody, "description": "No such session (MON609)"},
+    409: {"model": ApiErrorBody, "description": "Not possible in this CPU mode (MON607)"},
+    413: {"model": ApiErrorBody, "description": "Program too large (MON616)"},
+    422: {"model": ApiErrorBody, "description": "The program does not compile (MON611)"},
+    503: {"model": ApiErrorBody, "description": "Too many sessions (MON610)"},
+}
+
+
+def pool_of(state: object) -> WorkerPool:
+    found: WorkerPool = state.simulations  # type: ignore[attr-defined]
+    return found
+
+
+def _api_error(error: MonitorError) -> ApiError:
+    return ApiError(error.code, _STATUS.get(error.code, 400), **error.params)
+
+
+def _sources(items: list[Source]) -> list[tuple[str, str]]:
+    return [(item.name, item.text) for item in items]
+
+
+def _out(found: dict[str, Any]) -> SessionOut:
+    return SessionOut(
+        id=found["id"],
+        blocks=found["blocks"],
+        cpu=CpuState.model_validate(found["cpu"]),
+        clients=found["clients"],
+        websocket=f"/api/sessions/{found['id']}/ws",
+    )
+
+
+@router.post(
+    "",
+    response_model=SessionOut,
+    status_code=status.HTTP_201_CREATED,
+    responses=_ERRORS,
+    summary="Compile and download a program into a new simulated CPU (in STOP)",
+)
+async def create_session(body: SessionCreate, request: Request) -> SessionOut:
+    try:
+        found = await pool_of(request.app.state).create(
+            _sources(body.sources), body.profile, body.cycle_ms, body.time_mode
+        )
+    except MonitorError as error:
+        raise _api_error(error) from None
+    return _out(found)
+
+
+async def _call(request: Request, session_id: str, op: str, *args: Any) -> Any:
+    try:
+        return await pool_of(request.app.state).call(session_id, op, *args)
+    except MonitorError as error:
+        raise _api_error(error) from None
+
+
+@router.get("", response_model=list[SessionOut], summary="The running sessions")
+async def list_sessions(request: Request) -> list[SessionOut]:
+    found = []
+    for session_id in pool_of(request.app.state).ids():
+        try:
+            found.append(_out(await pool_of(request.app.state).call(session_id, "info")))
+        except MonitorError:
+            continue  # closed meanwhile
+    return found
+
+
+@router.get("/{session_id}", response_model=SessionOut, responses=_ERRORS, summary="One session")
+async def get_session(session_id: str, request: Request) -> SessionOut:
+    return _out(await _call(request, session_id, "info"))
+
+
+@router.put(
+    "/{session_id}/program",
+    response_model=DownloadOut,
+    responses=_ERRORS,
+    summary="Download a changed program (CPU in STOP)",
+)
+async def download(session_id: str, body: Download, request: Request) -> DownloadOut:
+    result = await _call(request, session_id, "download", _sources(body.sources))
+    return DownloadOut.model_validate(result)
+
+
+@router.get(
+    "/{session_id}/diagnostics",
+    response_model=list[DiagnosticEntry],
+    responses=_ERRORS,
+    summary="The CPU's diagnostic buffer, oldest first",
+)
+async def diagnostics(session_id: str, request: Request) -> list[DiagnosticEntry]:
+    found = await _call(request, session_id, "diagnostics")
+    return [DiagnosticEntry.model_validate(entry) for entry in found]
+
+
+@router.get(
+    "/{session_id}/trend.csv",
+    responses={**_ERRORS, 200: {"content": {"text/csv": {}}}},
+    summary="A client's trend samples as CSV (scan, time in ms, one column per value)",
+)
+async def trend_csv(
+    session_id: str, request: Request, client: Annotated[int, Query(ge=1)]
+) -> Response:
+    try:
+        text = await pool_of(request.app.state).call(session_id, "trend_csv", client)
+    except MonitorError as error:
+        status_code = 404 if error.code == "MON603" else _STATUS.get(error.code, 400)
+        raise ApiError(error.code, status_code, **error.params) from None
+    return Response(
+        text,
+        media_type="text/csv",
+        headers={"Content-Disposition": f'attachment; filename="trend-{session_id}.csv"'},
+    )
+
+
+@router.delete(
+    "/{session_id}",
+    status_code=status.HTTP_204_NO_CONTENT,
+    responses=_ERRORS,
+    summary="Close a session",
+)
+async def delete_session(session_id: str, request: Request) -> Response:
+    try:
+        await pool_of(request.app.state).delete(session_id)
+    except MonitorError as error:
+        raise _api_error(error) from None
+    return Response(status_code=status.HTTP_204_NO_CONTENT)
+
+
+@router.websocket("/{session_id}/ws")
+async def monitor_socket(socket: WebSocket, session_id: str) -> None:
+    pool = pool_of(socket.app.state)
+    if not pool.exists(session_id):
+        await socket.close(code=1008, reason=str(MonitorError("MON609", id=session_id))[:120])
+        return
+    timeout = socket.app.state.settings.slow_client_seconds
+    await Connection(socket, pool, session_id, timeout).serve()

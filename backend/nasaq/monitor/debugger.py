@@ -1,0 +1,363 @@
+"""Breakpoints, single steps and the hold: the CPU stopping in the middle of a scan.
+
+While a session debugs (a breakpoint is set or a step is pending) every code block runs its
+instrumented compilation, whose ``_B`` hook runs before each instruction; otherwise no block pays
+for it. A breakpoint holds before its instruction, so a value changed at the hold is the value the
+instruction reads. The hold runs in the CPU's thread: it waits there for commands (modify, step,
+continue, stop) while the scan's Python frames, and with them the block's locals, stay alive.
+The call stack is read from those frames: each instrumented block's code object maps its line
+numbers back to instructions.
+"""
+
+from __future__ import annotations
+
+import operator
+import re
+import sys
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from nasaq.cpu.codegen.compiler import Compiled
+from nasaq.cpu.errors import CpuStopError
+from nasaq.ir import BlockKind
+from nasaq.monitor import targets
+from nasaq.monitor.block_info import BlockInfo, Slot, read_slot, write_slot
+from nasaq.monitor.errors import MonitorError
+from nasaq.monitor.protocol import HoldState, StackFrame, Variable
+from nasaq.monitor.status import A1, A2, AR1, AR2, BR, CC0, CC1, DI, OS, OV, RLO, STA, status_word
+
+if TYPE_CHECKING:
+    from nasaq.monitor.session import Session
+
+MAX_BREAKPOINTS = 64
+Key = tuple[BlockKind, int]
+_REGISTERS = {
+    "RLO": RLO,
+    "VKE": RLO,
+    "STA": STA,
+    "ACCU1": A1,
+    "AKKU1": A1,
+    "ACCU2": A2,
+    "AKKU2": A2,
+    "AR1": AR1,
+    "AR2": AR2,
+    "OV": OV,
+    "OS": OS,
+    "BR": BR,
+    "BIE": BR,
+    "CC0": CC0,
+    "CC1": CC1,
+}
+_COMPARE: dict[str, Callable[[Any, Any], bool]] = {
+    "==": operator.eq,
+    "=": operator.eq,
+    "<>": operator.ne,
+    "<=": operator.le,
+    ">=": operator.ge,
+    "<": operator.lt,
+    ">": operator.gt,
+}
+_CONDITION = re.compile(r"^\s*(.+?)\s*(==|<>|<=|>=|=|<|>)\s*(\S+)\s*$")
+
+
+class OperatorStopError(CpuStopError):
+    """Unwinds a held scan: the operator switched the CPU to STOP (or closed the session)."""
+
+
+@dataclass(slots=True)
+class Condition:
+    text: str
+    operand: str  # "reg:<index>", "local:<name>" or "target"
+    target: targets.Target | None
+    compare: Callable[[Any, Any], bool]
+    value: float
+
+    def holds(
+        self,
+        info: BlockInfo,
+        frame: bytearray,
+        params: list[Any],
+        regs: tuple[Any, ...],
+        session: Session,
+    ) -> bool:
+        kind, _, name = self.operand.partition(":")
+        if kind == "reg":
+            actual: Any = regs[int(name)]
+        elif kind == "local":
+            slot = info.by_name.get(name)
+            if slot is None:
+                return False
+            actual = read_slot(slot, frame, regs[DI], regs[AR2], params)
+        else:
+            assert self.target is not None
+            actual = targets.read(self.target, session.cpu)
+        if isinstance(actual, bool):
+            actual = int(actual)
+        if not isinstance(actual, int | float):
+            return False
+        return self.compare(actual, self.value)
+
+
+@dataclass(slots=True)
+class Breakpoint:
+    id: int
+    key: Key
+    indices: list[int]
+    condition: Condition | None
+    where: str
+
+
+@dataclass(slots=True)
+class StepRequest:
+    kind: str  # "instruction", "statement", "network"
+    into: bool
+    depth: int
+    key: Key | None
+    line: int | None
+    network: int | None
+
+
+@dataclass(slots=True)
+class HoldContext:
+    """The held instruction with everything alive at that point of the scan."""
+
+    compiled: Compiled
+    info: BlockInfo
+    index: int
+    frame: bytearray
+    params: list[Any]
+    regs: tuple[Any, ...]
+    reason: str
+    breakpoint: int | None
+    depth: int
+
+
+def parse_condition(text: str, session: Session, info: BlockInfo) -> Condition:
+    """Reads ``<operand> <op> <value>``; a name of the block's own variables (with or without
+    ``#``) is that variable, else a register, an address or a symbol."""
+    match = _CONDITION.match(text)
+    if match is None:
+        raise MonitorError(
+            "MON612", condition=text, reason="write <operand> <comparison> <value>, e.g. MW10 > 5"
+        )
+    left, op, right = match.groups()
+    try:
+        value = float(right) if "." in right else float(int(right, 0))
+    except ValueError:
+        upper = right.upper()
+        if upper not in ("TRUE", "FALSE"):
+            raise MonitorError(
+                "MON612", condition=text, reason=f"{right} is not a number or TRUE/FALSE"
+            ) from None
+        value = 1.0 if upper == "TRUE" else 0.0
+    name = left.strip()
+    if name.upper() in _REGISTERS:
+        return Condition(text, f"reg:{_REGISTERS[name.upper()]}", None, _COMPARE[op], value)
+    own = name.lstrip("#").casefold()
+    if own in info.by_name:
+        return Condition(text, f"local:{own}", None, _COMPARE[op], value)
+    if name.startswith("#"):
+        raise MonitorError("MON612", condition=text, reason=f"{info.name} has no variable {name}")
+    try:
+        target = targets.resolve(name, session.program)
+    except targets.TargetError as error:
+        raise MonitorError("MON612", condition=text, reason=str(error)) from None
+    return Condition(text, "target", target, _COMPARE[op], value)
+
+
+class Debugger:
+    def __init__(self, session: Session) -> None:
+        self.session = session
+        self.breakpoints: dict[int, Breakpoint] = {}
+        self.at: dict[Key, dict[int, list[Breakpoint]]] = {}
+        self.step: StepRequest | None = None
+        self._next_id = 1
+
+    @property
+    def active(self) -> bool:
+        """Whether every block must run instrumented (breakpoints set or a step pending)."""
+        return bool(self.breakpoints) or self.step is not None
+
+    # -- breakpoints ----------------------------------------------------------------------------
+    def add(self, key: Key, indices: list[int], condition: Condition | None, where: str) -> int:
+        if len(self.breakpoints) >= MAX_BREAKPOINTS:
+            raise MonitorError("MON615", limit=MAX_BREAKPOINTS)
+        number = self._next_id
+        self._next_id += 1
+        found = Breakpoint(number, key, indices, condition, where)
+        self.breakpoints[number] = found
+        table = self.at.setdefault(key, {})
+        for index in indices:
+            table.setdefault(index, []).append(found)
+        return number
+
+    def remove(self, number: int | None) -> None:
+        chosen = list(self.breakpoints) if number is None else [number]
+        for k in chosen:
+            found = self.breakpoints.pop(k, None)
+            if found is None:
+                raise MonitorError(
+                    "MON607",
+                    action=f"Clearing breakpoint {k}",
+                    reason="there is no such breakpoint",
+                )
+            table = self.at.get(found.key, {})
+            for index in found.indices:
+                remaining = [b for b in table.get(index, []) if b.id != k]
+                if remaining:
+                    table[index] = remaining
+                else:
+                    table.pop(index, None)
+
+    # -- hooks ----------------------------------------------------------------------------------
+    def before_hook(self, compiled: Compiled, info: BlockInfo) -> Callable[..., None]:
+        key = (compiled.block.kind, compiled.block.number)
+        table = self.at.setdefault(key, {})
+        debugger = self
+
+        def before(index: int, frame: bytearray, params: list[Any], *regs: Any) -> None:
+            if debugger.step is not None or index in table:
+                debugger.check(compiled, info, index, frame, params, regs)
+
+        return before
+
+    def check(
+        self,
+        compiled: Compiled,
+        info: BlockInfo,
+        index: int,
+        frame: bytearray,
+        params: list[Any],
+        regs: tuple[Any, ...],
+    ) -> None:
+        session = self.session
+        depth = session.engine.m.depth
+        key = (compiled.block.kind, compiled.block.number)
+        for found in self.at.get(key, {}).get(index, ()):
+            condition = found.condition
+            if condition is None or condition.holds(info, frame, params, regs, session):
+                self.step = None
+                session.hold(
+                    HoldContext(
+                        compiled, info, index, frame, params, regs, "breakpoint", found.id, depth
+                    )
+                )
+                return
+        if self.step is not None and self._step_ends(key, info, index, depth):
+            self.step = None
+            session.hold(
+                HoldContext(compiled, info, index, frame, params, regs, "step", None, depth)
+            )
+
+    def _step_ends(self, key: Key, info: BlockInfo, index: int, depth: int) -> bool:
+        step = self.step
+        assert step is not None
+        if step.key is None or depth < step.depth:
+            return True  # a break-in, or back in the caller
+        if depth > step.depth:
+            return step.into
+        if step.kind == "instruction":
+            return True
+        if key != step.key:
+            return True
+        if step.kind == "network":
+            return info.networks[index] != step.network
+        return info.statement_start[index] and info.lines[index] != step.line
+
+    def request_step(self, kind: str, into: bool, held: HoldContext | None) -> None:
+        if held is None:  # a running CPU: hold at the next instruction anywhere
+            self.step = StepRequest(kind, True, 0, None, None, None)
+            return
+        info = held.info
+        self.step = StepRequest(
+            kind,
+            into,
+            held.depth,
+            (held.compiled.block.kind, held.compiled.block.number),
+            info.lines[held.index],
+            info.networks[held.index],
+        )
+
+
+# -- what a hold shows ---------------------------------------------------------------------------
+
+
+def hold_state(held: HoldContext, call_stack: list[StackFrame]) -> HoldState:
+    regs = held.regs
+    registers = {
+        "accu1": regs[A1] & 0xFFFFFFFF,
+        "accu2": regs[A2] & 0xFFFFFFFF,
+        "ar1": regs[AR1],
+        "ar2": regs[AR2],
+        "stw": status_word(regs),
+        "rlo": regs[RLO],
+        "sta": regs[STA],
+    }
+    return HoldState(
+        reason="breakpoint" if held.reason == "breakpoint" else "step",
+        breakpoint=held.breakpoint,
+        location=call_stack[0],
+        registers=registers,
+        locals=locals_of(held),
+        call_stack=call_stack,
+    )
+
+
+def locals_of(held: HoldContext) -> list[Variable]:
+    regs = held.regs
+    return [
+        Variable(
+            name=slot.name,
+            type=slot.type,
+            value=read_slot(slot, held.frame, regs[DI], regs[AR2], held.params),
+        )
+        for slot in held.info.slots
+    ]
+
+
+def local_slot(held: HoldContext, name: str) -> Slot:
+    slot = held.info.by_name.get(name.lstrip("#").strip().casefold())
+    if slot is None:
+        known = ", ".join(s.name for s in held.info.slots[:12]) or "none"
+        raise MonitorError(
+            "MON603", target=name, reason=f"{held.info.name} has no such variable (it has: {known})"
+        )
+    return slot
+
+
+def modify_local(held: HoldContext, name: str, value: Any) -> None:
+    slot = local_slot(held, name)
+    probe = targets.Target(text=name, type=slot.type, direct=None)
+    pattern = targets.encode(probe, value)
+    regs = held.regs
+    write_slot(slot, pattern, held.frame, regs[DI], regs[AR2], held.params)
+
+
+def call_stack(
+    held: HoldContext, by_filename: dict[str, Compiled], infos: Callable[[Compiled], BlockInfo]
+) -> list[StackFrame]:
+    """The held block first, then every caller, read from the live Python frames."""
+    stack = [_frame(held.info, held.index)]
+    python_frame = sys._getframe()
+    seen_held = False
+    while python_frame is not None:
+        compiled = by_filename.get(python_frame.f_code.co_filename)
+        if compiled is not None:
+            if not seen_held and compiled is held.compiled:
+                seen_held = True
+            elif seen_held:
+                index = compiled.line_map.get(python_frame.f_lineno, 0)
+                stack.append(_frame(infos(compiled), index))
+        python_frame = python_frame.f_back  # type: ignore[assignment]
+    return stack
+
+
+def _frame(info: BlockInfo, index: int) -> StackFrame:
+    return StackFrame(
+        block=info.name,
+        instruction=index,
+        line=info.lines[index] if index < len(info.lines) else None,
+        file=info.file,
+        network=info.networks[index] if index < len(info.networks) else None,
+    )

@@ -1,0 +1,102 @@
+"""Frames: what one client has not seen yet, and how unsent frames combine.
+
+A client's frame carries only the changes since its previous frame (``FrameState``, one per
+client, kept where the session runs). When a socket cannot take frames as fast as they come, the
+server does not queue them: ``merge`` folds a newer frame into the one still waiting, so the
+client gets one frame with the newest state and every trend sample and diagnostic entry.
+"""
+
+from __future__ import annotations
+
+import json
+from typing import TYPE_CHECKING, Any
+
+from nasaq.monitor import protocol as p
+
+if TYPE_CHECKING:
+    from nasaq.monitor.session import ClientView, Session, Snapshot
+
+MAX_MERGED_SAMPLES = 20_000
+
+
+class FrameState:
+    """What this client was last sent, to send only changes."""
+
+    def __init__(self) -> None:
+        self.seq = 0
+        self.cpu: p.CpuState | None = None
+        self.values: dict[str, p.WatchValue] = {}
+        self.block_scan: int | None = None
+        self.block_name: str | None = None
+        self.hold: p.HoldState | None = None
+        self.diagnostics = -1
+
+    def frame(self, snap: Snapshot, view: ClientView, session: Session) -> p.Frame | None:
+        """The changes ``snap`` brings this client; None when there are none."""
+        frame = p.Frame(seq=snap.seq)
+        changed = False
+        if view.cpu and snap.cpu != self.cpu:
+            frame.cpu = self.cpu = snap.cpu
+            changed = True
+        if view.watch:
+            delta = {}
+            for text in view.watch:
+                value = snap.values.get(text)
+                if value is not None and self.values.get(text) != value:
+                    delta[text] = value
+                    self.values[text] = value
+            if delta:
+                frame.watch = delta
+                changed = True
+        if view.open_block is not None:
+            status = snap.blocks.get(view.open_block)
+            if status is not None and (status.scan, status.block) != (
+                self.block_scan,
+                self.block_name,
+            ):
+                frame.block = status
+                self.block_scan, self.block_name = status.scan, status.block
+                changed = True
+        if snap.hold is not self.hold:
+            if snap.hold is None:
+                frame.released = True
+            frame.hold = snap.hold
+            self.hold = snap.hold
+            changed = True
+        samples = [view.samples.popleft() for _ in range(len(view.samples))]
+        if samples:
+            frame.trend = samples
+            changed = True
+        if snap.diagnostics != self.diagnostics:
+            buffer = session.engine.diagnostic_buffer
+            new = snap.diagnostics - max(self.diagnostics, 0)
+            if self.diagnostics >= 0 and new > 0:
+                frame.diagnostics = [
+                    p.DiagnosticEntry.of(e) for e in buffer[-min(new, len(buffer)) :]
+                ]
+                changed = True
+            self.diagnostics = snap.diagnostics
+        self.seq = snap.seq
+        return frame if changed else None
+
+
+def merge(older: str, newer: str) -> str:
+    """One frame (JSON text) with the effect of ``older`` followed by ``newer``."""
+    a: dict[str, Any] = json.loads(older)
+    b: dict[str, Any] = json.loads(newer)
+    merged = dict(a)
+    merged["seq"] = b["seq"]
+    for key in ("cpu", "block"):
+        if b.get(key) is not None:
+            merged[key] = b[key]
+    if b.get("watch"):
+        merged["watch"] = {**(a.get("watch") or {}), **b["watch"]}
+    for key in ("trend", "diagnostics"):
+        if b.get(key):
+            merged[key] = ((a.get(key) or []) + b[key])[-MAX_MERGED_SAMPLES:]
+    if b.get("released"):
+        merged["released"] = True
+        merged["hold"] = b.get("hold")
+    elif b.get("hold") is not None:
+        merged["hold"] = b["hold"]
+    return json.dumps(merged, separators=(",", ":"))

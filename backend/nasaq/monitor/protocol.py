@@ -1,0 +1,343 @@
+"""The monitoring protocol's messages: what a client sends on a session's WebSocket, and what the
+server sends back. ``PROTOCOL.md`` beside this module explains them; the front end's TypeScript
+types (``frontend/src/api/monitor.ts``) are generated from these models and held to them by a test.
+
+Every client message may carry ``ref``; the server answers it with an ``ack`` (and a result) or an
+``error`` with the same ``ref``. Frames carry only what changed since the client's previous frame.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, StrictInt, TypeAdapter
+
+PROTOCOL_VERSION = 1
+
+Value = bool | int | float | str | None
+TimeModeName = Literal["virtual", "real", "fast", "pause"]
+CpuMode = Literal["RUN", "STOP", "HOLD"]
+StepKind = Literal["instruction", "statement", "network", "scan"]
+
+
+class _Message(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    ref: StrictInt | None = Field(
+        default=None, description="Echoed in the ack or error that answers it"
+    )
+
+
+# -- client -> server: subscriptions ------------------------------------------------------------
+
+
+class SubscribeCpu(_Message):
+    """CPU state in every frame where it changed (mode, scans, clock, cycle statistic)."""
+
+    type: Literal["subscribe_cpu"]
+    on: bool = True
+
+
+class Watch(_Message):
+    """Replaces the watch list: addresses (``MW10``, ``DB1.DBW2``, ``T1``), symbols
+    (``"Motor"``), DB and instance-DB members (``DB1.level``, ``"Tank".level``, ``DB5.t1.ET``)
+    and, while the CPU holds, locals of the held block (``#count``)."""
+
+    type: Literal["watch"]
+    entries: list[str] = Field(max_length=10_000)
+
+
+class OpenBlock(_Message):
+    """The block whose status (per STL instruction, per SCL line) the frames carry; None: none."""
+
+    type: Literal["open_block"]
+    block: str | None
+
+
+class Trend(_Message):
+    """Values sampled at the end of every scan, sent as batches of samples."""
+
+    type: Literal["trend"]
+    entries: list[str] = Field(max_length=10_000)
+
+
+# -- client -> server: commands -----------------------------------------------------------------
+
+
+class Run(_Message):
+    type: Literal["run"]
+
+
+class Stop(_Message):
+    type: Literal["stop"]
+
+
+class Restart(_Message):
+    """Warm restart (OB100), or cold restart (OB102) with ``cold``; the CPU goes to RUN."""
+
+    type: Literal["restart"]
+    cold: bool = False
+
+
+class SetTime(_Message):
+    type: Literal["set_time"]
+    mode: TimeModeName
+    cycle_ms: float | None = Field(default=None, ge=1, le=60_000)
+
+
+class SetInput(_Message):
+    """Drives a peripheral input (``I0.3``, ``IW4``, or an input's symbol)."""
+
+    type: Literal["set_input"]
+    address: str
+    value: Value
+
+
+class Modify(_Message):
+    """Writes a value once (memory, DB member, or a local of the held block)."""
+
+    type: Literal["modify"]
+    target: str
+    value: Value
+
+
+class Force(_Message):
+    type: Literal["force"]
+    address: str
+    value: Value
+
+
+class Unforce(_Message):
+    """Removes the force of ``address``, or every force when it is None."""
+
+    type: Literal["unforce"]
+    address: str | None = None
+
+
+class Location(BaseModel):
+    """Where a breakpoint goes: a source line (``file`` + ``line``, STL or SCL), or a block with
+    an STL instruction index or a network (1-based), or a block with a line of its source."""
+
+    model_config = ConfigDict(extra="forbid")
+    file: str | None = None
+    block: str | None = None
+    line: int | None = Field(default=None, ge=1)
+    network: int | None = Field(default=None, ge=1)
+    instruction: int | None = Field(default=None, ge=0)
+
+
+class SetBreakpoint(_Message):
+    """``condition``: ``<operand> <op> <value>`` with op one of = == <> < > <= >=, the operand an
+    address, symbol, ``#local``, or a register (RLO, STA, ACCU1, ACCU2, AR1, AR2, OV, OS, BR)."""
+
+    type: Literal["set_breakpoint"]
+    location: Location
+    condition: str | None = Field(default=None, max_length=200)
+
+
+class ClearBreakpoint(_Message):
+    """Clears breakpoint ``id``, or all of them when it is None."""
+
+    type: Literal["clear_breakpoint"]
+    id: int | None = None
+
+
+class Continue(_Message):
+    type: Literal["continue"]
+
+
+class Step(_Message):
+    """From a hold: to the next STL instruction, SCL statement, network, or the next scan's end.
+    ``into`` enters called blocks; without it a step stays in the block (or returns to its caller).
+    From STOP or pause, ``scan`` runs one scan."""
+
+    type: Literal["step"]
+    by: StepKind
+    into: bool = False
+
+
+class RunScans(_Message):
+    """Runs ``count`` scans, then pauses."""
+
+    type: Literal["run_scans"]
+    count: int = Field(ge=1, le=1_000_000)
+
+
+ClientMessage = Annotated[
+    SubscribeCpu
+    | Watch
+    | OpenBlock
+    | Trend
+    | Run
+    | Stop
+    | Restart
+    | SetTime
+    | SetInput
+    | Modify
+    | Force
+    | Unforce
+    | SetBreakpoint
+    | ClearBreakpoint
+    | Continue
+    | Step
+    | RunScans,
+    Field(discriminator="type"),
+]
+CLIENT_MESSAGE: TypeAdapter[ClientMessage] = TypeAdapter(ClientMessage)
+
+
+# -- server -> client ---------------------------------------------------------------------------
+
+
+class Hello(BaseModel):
+    type: Literal["hello"] = "hello"
+    session: str
+    client: int = Field(description="This connection's number (e.g. for the trend CSV export)")
+    protocol: int = PROTOCOL_VERSION
+    max_frames_per_second: int
+    max_watch_entries: int
+
+
+class Ack(BaseModel):
+    type: Literal["ack"] = "ack"
+    ref: int | None
+    result: dict[str, object] | None = None
+
+
+class ProtocolError(BaseModel):
+    """A message the server could not carry out; ``code`` is from the diagnostics catalogue."""
+
+    type: Literal["error"] = "error"
+    ref: int | None
+    code: str
+    key: str
+    message: str
+    params: dict[str, object] = Field(default_factory=dict)
+
+
+class CycleStats(BaseModel):
+    """Wall-clock milliseconds the scans took (the program's work, not the cycle wait)."""
+
+    last_ms: float
+    min_ms: float
+    max_ms: float
+    avg_ms: float
+
+
+class ForcedValue(BaseModel):
+    address: str
+    value: int
+
+
+class CpuState(BaseModel):
+    mode: CpuMode
+    time_mode: TimeModeName
+    cycle_ms: float
+    scans: int
+    time_ms: int
+    stop_code: str | None
+    stop_reason: str | None
+    cycle: CycleStats | None
+    forced: list[ForcedValue]
+
+
+class WatchValue(BaseModel):
+    """A watch entry's value; ``forced`` when a force holds it; ``error`` when it has none."""
+
+    value: Value
+    forced: bool = False
+    error: str | None = None
+
+
+class InstructionStatus(BaseModel):
+    """The registers as STL instruction ``index`` left them (STEP 7's block status columns)."""
+
+    index: int
+    line: int | None
+    rlo: int
+    sta: int
+    accu1: int
+    accu2: int
+    stw: int
+    ar1: int
+    ar2: int
+    operand: Value = None
+
+
+class LineStatus(BaseModel):
+    """An SCL line: the variables its code read or wrote, with their last values."""
+
+    line: int
+    values: dict[str, Value]
+
+
+class BlockStatus(BaseModel):
+    """One sampled execution of the open block: rows for the instructions that ran."""
+
+    block: str
+    language: Literal["stl", "scl"]
+    scan: int
+    instructions: list[InstructionStatus]
+    lines: list[LineStatus]
+
+
+class Frame(BaseModel):
+    type: Literal["frame"] = "frame"
+    seq: int
+    cpu: CpuState | None = None
+    watch: dict[str, WatchValue] | None = None
+    block: BlockStatus | None = None
+    trend: list[TrendSample] | None = None
+    hold: HoldState | None = None
+    released: bool = Field(default=False, description="The hold of the previous frame has ended")
+    diagnostics: list[DiagnosticEntry] | None = None
+
+
+class TrendSample(BaseModel):
+    scan: int
+    time_ms: int
+    values: list[Value]
+
+
+class StackFrame(BaseModel):
+    block: str
+    instruction: int
+    line: int | None
+    file: str | None
+    network: int | None
+
+
+class Variable(BaseModel):
+    name: str
+    type: str
+    value: Value
+
+
+class HoldState(BaseModel):
+    """Where the CPU holds mid-scan: the innermost block first in ``call_stack``."""
+
+    reason: Literal["breakpoint", "step"]
+    breakpoint: int | None
+    location: StackFrame
+    registers: dict[str, int]
+    locals: list[Variable]
+    call_stack: list[StackFrame]
+
+
+class DiagnosticEntry(BaseModel):
+    time_ms: int
+    code: str
+    message: str
+    block: str | None
+    network: int | None
+    line: int | None
+
+    @classmethod
+    def of(cls, entry: object) -> DiagnosticEntry:
+        """The protocol's copy of a CPU diagnostic buffer entry (``cpu.cycle.DiagnosticEntry``)."""
+        return cls.model_validate(entry, from_attributes=True)
+
+
+Frame.model_rebuild()
+
+ServerMessage = Annotated[Hello | Ack | ProtocolError | Frame, Field(discriminator="type")]
+SERVER_MESSAGE: TypeAdapter[ServerMessage] = TypeAdapter(ServerMessage)

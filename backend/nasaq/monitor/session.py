@@ -1,0 +1,897 @@
+"""One simulation session: a downloaded program on its own CPU, run by its own thread.
+
+The thread owns the CPU. Everything that changes it (commands from the WebSocket, REST calls) is
+queued and carried out by the thread between scans, or at a hold in the middle of one, so a scan
+never sees a half-made change and no lock is held while the program runs. What clients see is a
+``Snapshot`` the thread publishes after a scan (at most ~30 per second, or at once after a
+command), and from it each client's frame with only what that client has not seen (``emit``, which
+the worker forwards to the server), plus per-client trend samples taken at the end of every scan.
+Nothing the thread does waits for a client.
+
+Time (``set_time``): ``virtual`` runs one scan per cycle of the wall clock and advances the
+simulated clock by exactly the cycle time (scans up to 100 ms late are made up, later ones are
+lost, as a real CPU's cycle grows); ``real`` also paces scans to the wall clock, and the
+simulated clock follows the wall clock (a slow scan makes time jump, as on a real CPU); ``fast``
+runs scans back to back; ``pause`` runs none and the clock stands still. A session's scans may
+use at most ``cpu_share`` of one core over any 200 ms (fast mode, a heavy program): the limiter
+sleeps the rest, so one session cannot starve the others.
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+import time
+from collections import deque
+from collections.abc import Callable
+from concurrent.futures import Future
+from dataclasses import dataclass, field
+from typing import Any, TypeVar
+
+from nasaq.cpu import Cpu, Profile
+from nasaq.cpu.codegen.compiler import Compiled
+from nasaq.ir import Area, BlockKind, Direct, Program
+from nasaq.lang.stl import SourceFile, compile_sources
+from nasaq.monitor import targets
+from nasaq.monitor.block_info import (
+    BlockInfo,
+    block_info,
+    breakpoint_indices,
+    parse_block_name,
+    read_slot,
+)
+from nasaq.monitor.debugger import (
+    Debugger,
+    HoldContext,
+    OperatorStopError,
+    call_stack,
+    hold_state,
+    local_slot,
+    modify_local,
+    parse_condition,
+)
+from nasaq.monitor.errors import MonitorError
+from nasaq.monitor.frames import FrameState
+from nasaq.monitor.protocol import (
+    BlockStatus,
+    CpuState,
+    CycleStats,
+    ForcedValue,
+    HoldState,
+    Location,
+    StepKind,
+    TimeModeName,
+    TrendSample,
+    Value,
+    WatchValue,
+)
+from nasaq.monitor.scheduler import Scheduler
+from nasaq.monitor.status import Recorder
+
+log = logging.getLogger(__name__)
+T = TypeVar("T")
+Key = tuple[BlockKind, int]
+FRAME_INTERVAL_S = 1 / 30
+EARLY_S = 0.001  # on the scheduler a scan may start this much before it is due
+SLICE_S = 0.002  # the longest turn of a fast session on the scheduler
+CATCH_UP_S = 0.1  # paced scans this late are made up; later ones are lost (the cycle grew)
+MAX_WATCH = 500
+MAX_TREND = 32
+TREND_SAMPLES = 20_000  # kept per client until sent
+MAX_DB_BYTES = 16 * 1024 * 1024
+SHARE_WINDOW_S = 0.2
+CODE_KINDS = (BlockKind.OB, BlockKind.FB, BlockKind.FC)
+
+
+@dataclass(slots=True)
+class ClientView:
+    """What one connected client subscribed to; its trend samples wait here until sent."""
+
+    cpu: bool = False
+    watch: list[str] = field(default_factory=list)
+    watch_targets: dict[str, targets.Target | str] = field(default_factory=dict)
+    open_block: Key | None = None
+    trend: list[targets.Target] = field(default_factory=list)
+    samples: deque[TrendSample] = field(default_factory=lambda: deque(maxlen=TREND_SAMPLES))
+    history: deque[TrendSample] = field(default_factory=lambda: deque(maxlen=TREND_SAMPLES))
+    state: FrameState = field(default_factory=FrameState)
+
+
+@dataclass(frozen=True, slots=True)
+class Snapshot:
+    seq: int
+    cpu: CpuState
+    values: dict[str, WatchValue]
+    blocks: dict[Key, BlockStatus]
+    hold: HoldState | None
+    diagnostics: int  # entries ever made in the diagnostic buffer
+
+
+def compile_download(sources: list[SourceFile]) -> Program:
+    result = compile_sources(sources)
+    errors = [d for d in result.diagnostics if d.severity.value == "error"]
+    if errors:
+        first = errors[0]
+        where = f"{first.span.file}:{first.span.line}:{first.span.column}" if first.span else ""
+        raise MonitorError(
+            "MON611", count=len(errors), first=f"{where} {first.code} {first.message}".strip()
+        )
+    size = sum(len(b.data) for b in result.program.blocks.values())
+    if size > MAX_DB_BYTES:
+        raise MonitorError("MON616", reason=f"{size} bytes of data blocks, at most {MAX_DB_BYTES}")
+    return result.program
+
+
+class Session:
+    def __init__(
+        self,
+        session_id: str,
+        sources: list[SourceFile],
+        profile: Profile = Profile.S7_300,
+        cycle_ms: float = 10,
+        time_mode: TimeModeName = "virtual",
+        cpu_share: float = 0.5,
+    ) -> None:
+        self.id = session_id
+        self.sources = list(sources)
+        self.profile = profile
+        self.program = compile_download(self.sources)
+        self.cpu = Cpu(self.program, profile, cycle_ms)
+        self.time_mode: TimeModeName = time_mode
+        self._resume_mode: TimeModeName = "virtual" if time_mode == "pause" else time_mode
+        self.cpu_share = cpu_share
+        self.debugger = Debugger(self)
+        self.clients: dict[int, ClientView] = {}
+        self.snapshot: Snapshot | None = None
+        self.held: HoldContext | None = None
+        self.hold_view: HoldState | None = None
+        self.last_activity = time.monotonic()
+        self.closed = False
+        # Where frames go: ``emit(client, frame_json)`` (the worker forwards them to the sockets).
+        self.emit: Callable[[int, str], None] | None = None
+        self._cond = threading.Condition()
+        self._commands: deque[tuple[Callable[[], Any], Future[Any]]] = deque()
+        self._infos: dict[Key, BlockInfo] = {}
+        self._recorders: dict[Key, Recorder] = {}
+        self._debug_keys: frozenset[Key] = frozenset()
+        self._block_status: dict[Key, BlockStatus] = {}
+        self._seq = 0
+        self._urgent = False
+        self._stale = False  # a scan ran after the last snapshot
+        self._failures = 0
+        self._next_publish = 0.0
+        self._answer_pending = False  # a command ran: publish right after the next scan
+        self._last_capture = 0.0
+        self._due = 0.0
+        self._scans_left = 0
+        self._pause_after_scan = False
+        self._resume = False
+        self._abort: tuple[str, bool] | None = None
+        self._stats: list[float] = []  # last, min, max, sum, count
+        self._held_time = 0.0
+        self._busy: deque[tuple[float, float]] = deque()  # (end, duration) of recent scans
+        self._busy_total = 0.0
+        self._real_origin: tuple[float, int] | None = None
+        self.scheduler: Scheduler | None = None
+        self.owner = "thread"  # who runs the session: "thread" (its own) or "scheduler"
+        self._thread = threading.Thread(
+            target=self._main, name=f"nasaq-cpu-{session_id}", daemon=True
+        )
+
+    @property
+    def engine(self) -> Any:
+        return self.cpu.engine
+
+    # -- life -----------------------------------------------------------------------------------
+    def start(self, scheduler: Scheduler | None = None) -> None:
+        """Starts running (the CPU itself stays in STOP until ``run``): on the process's
+        ``scheduler`` while nothing can hold the CPU, else on the session's own thread."""
+        self.scheduler = scheduler
+        if scheduler is None:
+            self.owner = "thread"
+            self._thread.start()
+        else:
+            self.owner = "scheduler"
+            scheduler.add(self)
+
+    def close(self) -> None:
+        with self._cond:
+            self.closed = True
+            self._cond.notify_all()
+        if self.scheduler is not None:
+            self.scheduler.remove(self)
+        if self._thread.is_alive() and threading.current_thread() is not self._thread:
+            self._thread.join(timeout=5)
+
+    def _needs_thread(self) -> bool:
+        """A hold blocks the thread that runs the scan, so a session that may hold (breakpoints
+        set, a step pending, holding) runs on its own thread, never on the shared scheduler."""
+        return self.debugger.active or self.held is not None
+
+    def _to_thread(self) -> None:
+        self.owner = "thread"
+        if not self._thread.is_alive():
+            self._thread.start()
+        with self._cond:
+            self._cond.notify_all()
+
+    # -- commands -------------------------------------------------------------------------------
+    def submit(self, action: Callable[[], T]) -> Future[T]:
+        """Runs ``action`` in the CPU thread (between scans or at a hold); its result or
+        exception lands in the future."""
+        future: Future[T] = Future()
+        if self.closed:
+            future.set_exception(MonitorError("MON614"))
+            return future
+        self.last_activity = time.monotonic()
+        with self._cond:
+            self._commands.append((action, future))
+            self._cond.notify_all()
+        if self.scheduler is not None:
+            self.scheduler.wake()
+        return future
+
+    def _run_commands(self) -> None:
+        ran = False
+        while self._commands:
+            action, future = self._commands.popleft()
+            ran = True
+            if not future.set_running_or_notify_cancel():
+                continue
+            try:
+                future.set_result(action())
+            except MonitorError as error:
+                future.set_exception(error)
+            except targets.TargetError as error:
+                future.set_exception(MonitorError(error.code, **error.params))
+            except OperatorStopError:
+                raise
+            except Exception as error:  # a bug: the client gets an error, the thread lives on
+                future.set_exception(error)
+            if self.owner == "scheduler" and self._needs_thread():
+                self._to_thread()  # the rest of the commands run there
+                break
+        if ran:
+            self._urgent = True
+            self._answer_pending = True
+
+    # The commands below run in the CPU thread (through ``submit``).
+    def do_run(self) -> None:
+        if self.held is not None:
+            self._resume = True
+        elif self.cpu.mode != "RUN":
+            self._restart(cold=False)
+        elif self.time_mode == "pause":
+            self.time_mode = self._resume_mode
+
+    def do_stop(self) -> None:
+        if self.held is not None:
+            self._abort = ("stop", False)
+        self.cpu.stop()
+        self._scans_left = 0
+
+    def do_restart(self, cold: bool) -> None:
+        if self.held is not None:
+            self._abort = ("restart", cold)
+            return
+        self._restart(cold)
+
+    def _restart(self, cold: bool) -> None:
+        self._stats = []
+        self._real_origin = None
+        if self.time_mode == "pause":
+            self.time_mode = self._resume_mode
+        self._select_variants(capture=False)
+        self.cpu.start(cold)
+        self._due = 0.0
+
+    def do_set_time(self, mode: TimeModeName, cycle_ms: float | None) -> None:
+        if cycle_ms is not None:
+            self.cpu.cycle_ms = cycle_ms
+        if mode != "pause":
+            self._resume_mode = mode
+        self.time_mode = mode
+        self._real_origin = None
+        self._due = 0.0
+
+    def do_set_input(self, text: str, value: Value) -> None:
+        target = self._memory_target(text)
+        if target.direct is None or not targets.is_input(target):
+            raise MonitorError("MON603", target=text, reason="this is not an input (I, PI)")
+        self.cpu.set_input(target.direct, targets.encode(target, value))
+
+    def do_modify(self, text: str, value: Value) -> None:
+        if text.strip().startswith("#"):
+            if self.held is None:
+                raise MonitorError(
+                    "MON607",
+                    action=f"Modifying {text}",
+                    reason="locals exist only while the CPU holds",
+                )
+            modify_local(self.held, text, value)
+            self._refresh_hold()
+            return
+        targets.write(self._memory_target(text), self.cpu, value)
+        if self.held is not None:
+            self._refresh_hold()
+
+    def do_force(self, text: str, value: Value) -> None:
+        target = self._memory_target(text)
+        if target.direct is None or not (targets.is_input(target) or targets.is_output(target)):
+            raise MonitorError(
+                "MON603", target=text, reason="only inputs and outputs (I, Q) can be forced"
+            )
+        self.cpu.force(target.direct, targets.encode(target, value))
+
+    def do_unforce(self, text: str | None) -> None:
+        if text is None:
+            self.cpu.unforce()
+            return
+        target = self._memory_target(text)
+        if target.direct is None or not (targets.is_input(target) or targets.is_output(target)):
+            raise MonitorError("MON603", target=text, reason="only inputs and outputs are forced")
+        self.cpu.unforce(target.direct)
+
+    def do_set_breakpoint(self, location: Location, condition: str | None) -> dict[str, object]:
+        info, indices = self._locate(location)
+        parsed = parse_condition(condition, self, info) if condition else None
+        where = (
+            f"{info.file or info.name} line {location.line}"
+            if location.line is not None
+            else f"{info.name} network {location.network}"
+            if location.network is not None
+            else f"{info.name} instruction {location.instruction}"
+        )
+        number = self.debugger.add((info.block.kind, info.block.number), indices, parsed, where)
+        return {"id": number, "block": info.name, "instructions": indices, "where": where}
+
+    def do_clear_breakpoint(self, number: int | None) -> None:
+        self.debugger.remove(number)
+
+    def do_continue(self) -> None:
+        if self.held is not None:
+            self._resume = True
+            return
+        if self.cpu.mode == "RUN" and self.time_mode == "pause":
+            self.time_mode = self._resume_mode
+            return
+        raise MonitorError(
+            "MON607", action="Continue", reason="the CPU neither holds nor is paused"
+        )
+
+    def do_step(self, by: StepKind, into: bool) -> None:
+        if self.cpu.mode != "RUN":
+            raise MonitorError("MON607", action="A single step", reason="the CPU is in STOP")
+        if by == "scan":
+            if self.held is not None:
+                self._pause_after_scan = True
+                self._resume = True
+            else:
+                self._scans_left = 1
+                if self.time_mode != "pause":
+                    self._resume_mode = self.time_mode
+                    self.time_mode = "pause"
+            return
+        self.debugger.request_step(by, into, self.held)
+        if self.held is not None:
+            self._resume = True
+        elif self.time_mode == "pause":
+            self._scans_left = 1
+
+    def do_run_scans(self, count: int) -> None:
+        if self.cpu.mode != "RUN" or self.held is not None:
+            raise MonitorError(
+                "MON607",
+                action=f"Running {count} scans",
+                reason="the CPU must be in RUN, not holding",
+            )
+        if self.time_mode != "pause":
+            self._resume_mode = self.time_mode
+        self.time_mode = "pause"
+        self._scans_left = count
+
+    def do_download(self, sources: list[SourceFile]) -> dict[str, object]:
+        """Replaces the program in STOP; memory and the data blocks whose layout is unchanged
+        keep their values (new and changed DBs get their initial values)."""
+        if self.cpu.mode != "STOP":
+            raise MonitorError("MON607", action="A download", reason="switch the CPU to STOP first")
+        program = compile_download(sources)
+        old = self.cpu
+        cpu = Cpu(program, self.profile, old.cycle_ms)
+        changed = _changed_blocks(self.program, program)
+        for area in (Area.M, Area.PI):
+            fresh = cpu.engine.memory.area(area)
+            fresh[:] = old.engine.memory.area(area)[: len(fresh)]
+        for number, data in old.engine.memory.dbs.items():
+            new_block = program.get(BlockKind.DB, number)
+            old_block = self.program.get(BlockKind.DB, number)
+            target = cpu.engine.memory.dbs.get(number)
+            if (
+                target is not None
+                and new_block is not None
+                and old_block is not None
+                and len(target) == len(data)
+                and _same_layout(old_block, new_block, self.program, program)
+            ):
+                target[:] = data
+        cpu.engine.m.now = old.engine.m.now
+        cpu.engine.diagnostic_buffer = list(old.engine.diagnostic_buffer)
+        cpu.engine.diagnostic_count = old.engine.diagnostic_count
+        self.sources = list(sources)
+        self.program = program
+        self.cpu = cpu
+        self._infos.clear()
+        self._recorders.clear()
+        self._block_status.clear()
+        self._debug_keys = frozenset()
+        self.debugger = Debugger(self)
+        return {"changed": changed}
+
+    def view(self, client: int) -> ClientView:
+        found = self.clients.get(client)
+        if found is None:
+            raise MonitorError("MON614")
+        return found
+
+    def do_watch(self, client: int, entries: list[str]) -> dict[str, object]:
+        if len(entries) > MAX_WATCH:
+            raise MonitorError("MON605", what="watch", count=len(entries), limit=MAX_WATCH)
+        resolved: dict[str, targets.Target | str] = {}
+        report: list[dict[str, object]] = []
+        for text in entries:
+            if text.strip().startswith("#"):
+                resolved[text] = "local"
+                report.append({"entry": text, "type": "local"})
+                continue
+            try:
+                target = self._memory_target(text)
+            except targets.TargetError as error:
+                resolved[text] = str(error)
+                report.append({"entry": text, "code": error.code, "error": str(error)})
+                continue
+            resolved[text] = target
+            report.append({"entry": text, "type": target.type})
+        view = self.view(client)
+        view.watch = list(entries)
+        view.watch_targets = resolved
+        return {"entries": report}
+
+    def do_trend(self, client: int, entries: list[str]) -> dict[str, object]:
+        if len(entries) > MAX_TREND:
+            raise MonitorError("MON605", what="trend", count=len(entries), limit=MAX_TREND)
+        chosen = [self._memory_target(text) for text in entries]
+        view = self.view(client)
+        view.trend = chosen
+        view.samples.clear()
+        view.history.clear()
+        return {"entries": [{"entry": t.text, "type": t.type} for t in chosen]}
+
+    def do_open_block(self, client: int, name: str | None) -> dict[str, object]:
+        view = self.view(client)
+        if name is None:
+            view.open_block = None
+            return {}
+        key = parse_block_name(name, self.program)
+        info = self.info(key)
+        view.open_block = key
+        self._last_capture = 0.0
+        return {"block": info.name, "language": info.language, "instructions": len(info.lines)}
+
+    def _memory_target(self, text: str) -> targets.Target:
+        """The target ``text`` names; MON603 also when this CPU has no such address."""
+        target = targets.resolve(text, self.program)
+        targets.read(target, self.cpu)  # raises for an address beyond the CPU's memory
+        return target
+
+    def _locate(self, location: Location) -> tuple[BlockInfo, list[int]]:
+        if location.block is not None:
+            info = self.info(parse_block_name(location.block, self.program))
+            if location.line is None and location.network is None and location.instruction is None:
+                raise MonitorError(
+                    "MON604", where=info.name, hint=" (give a line, network or instruction)"
+                )
+            return info, breakpoint_indices(info, location)
+        if location.file is None or location.line is None:
+            raise MonitorError("MON604", where="?", hint=" (give a block, or a file and a line)")
+        wanted = _base_name(location.file)
+        line = location.line
+        later: list[int] = []
+        for key in sorted(self.program.blocks, key=lambda k: (k[0].value, k[1])):
+            if key[0] not in CODE_KINDS:
+                continue
+            info = self.info(key)
+            if info.file is None or _base_name(info.file) != wanted:
+                continue
+            if any(v == line for v in info.lines):
+                return info, breakpoint_indices(info, location)
+            later += [v for v in info.lines if v is not None and v > line]
+        hint = f" (the next line with code is {min(later)})" if later else ""
+        raise MonitorError("MON604", where=f"{location.file} line {line}", hint=hint)
+
+    # -- block information and instrumentation ---------------------------------------------------
+    def info(self, key: Key) -> BlockInfo:
+        found = self._infos.get(key)
+        if found is None:
+            block = self.program.get(*key)
+            assert block is not None
+            found = self._infos[key] = block_info(block)
+        return found
+
+    def _info_of(self, compiled: Compiled) -> BlockInfo:
+        return self.info((compiled.block.kind, compiled.block.number))
+
+    def _recorder(self, key: Key) -> Recorder:
+        found = self._recorders.get(key)
+        if found is None:
+            engine = self.engine
+            found = self._recorders[key] = Recorder(
+                self.info(key), engine.memory, engine.timers, engine.counters
+            )
+        return found
+
+    def _hooks(self, compiled: Compiled) -> tuple[Callable[..., None], Callable[..., None]]:
+        key = (compiled.block.kind, compiled.block.number)
+        return self.debugger.before_hook(compiled, self.info(key)), self._recorder(key).hook()
+
+    def _select_variants(self, capture: bool) -> list[Key]:
+        """Chooses which blocks run instrumented in the next scan; returns the open blocks
+        sampled in it."""
+        if not capture and not self._debug_keys and not self.debugger.active:
+            return []  # the usual scan: every block runs its fast compilation
+        opened = {v.open_block for v in list(self.clients.values()) if v.open_block is not None}
+        sampled = sorted(opened, key=lambda k: (k[0].value, k[1])) if capture else []
+        if self.debugger.active:
+            wanted = frozenset(k for k in self.program.blocks if k[0] in CODE_KINDS)
+        else:
+            wanted = frozenset(sampled)
+        if wanted != self._debug_keys:
+            loader = self.engine.loader
+            for key in self._debug_keys | wanted:
+                if key in wanted:
+                    loader.instrumented(key[0], key[1], self._hooks)
+                loader.select(key[0], key[1], key in wanted)
+            self._debug_keys = wanted
+        return sampled
+
+    # -- the hold (runs inside a hook, in the CPU thread) ----------------------------------------
+    def hold(self, context: HoldContext) -> None:
+        started = time.perf_counter()
+        self.held = context
+        self._resume = False
+        self._refresh_hold()
+        try:
+            while True:
+                with self._cond:
+                    while not self._commands and not self.closed:
+                        self._cond.wait(1.0)
+                self._run_commands()
+                if self.closed or self._abort is not None:
+                    raise OperatorStopError("SIM527")
+                if self._resume:
+                    break
+                self._refresh_hold()
+        finally:
+            self._resume = False
+            self.held = None
+            self.hold_view = None
+            self._held_time += time.perf_counter() - started
+            self._urgent = True
+
+    def _refresh_hold(self) -> None:
+        held = self.held
+        if held is None:
+            return
+        stack = call_stack(held, self.engine.loader.by_filename, self._info_of)
+        self.hold_view = hold_state(held, stack)
+        self._publish(force=True)
+
+    # -- the CPU thread --------------------------------------------------------------------------
+    def _main(self) -> None:
+        while not self.closed:
+            if self.owner != "thread":
+                with self._cond:
+                    if self.owner != "thread" and not self.closed:
+                        self._cond.wait(0.5)
+                continue
+            try:
+                self._step_thread()
+            except Exception:  # a bug in the monitor: the CPU stops, the session lives on
+                self._failed()
+            if self.scheduler is not None and not self._needs_thread():
+                self.owner = "scheduler"  # nothing can hold any more: back to the scheduler
+                self.scheduler.wake()
+        self._abort = None
+
+    def _failed(self) -> None:
+        self._failures += 1
+        if self._failures <= 3:
+            log.exception("simulation session %s: internal error", self.id)
+        self.cpu.stop()
+        self._urgent = True
+        time.sleep(0.05)
+
+    def tick(self) -> float | None:
+        """The scheduler's turn: carry out the commands, run the scans due within ``EARLY_S``
+        (a fast session: for up to ``SLICE_S``); when the session wants the next turn
+        (``perf_counter`` time), None when only a command can make it run."""
+        try:
+            self._run_commands()
+            if self.owner != "scheduler" or self.closed:
+                return None
+            ends = time.perf_counter() + SLICE_S
+            while True:
+                delay = self._delay()
+                if delay is None or delay > EARLY_S:
+                    idle = delay is None or delay > FRAME_INTERVAL_S
+                    if self._urgent or (self._stale and idle):
+                        self._publish(force=True)  # idle now: the clients get the newest state
+                    return None if delay is None else time.perf_counter() + delay
+                if time.perf_counter() > ends:
+                    return time.perf_counter()
+                self._scan()
+        except Exception:  # a bug in the monitor: the CPU stops, the session lives on
+            self._failed()
+            return None
+
+    def _step_thread(self) -> None:
+        self._run_commands()
+        if self.closed:
+            return
+        delay = self._delay()
+        if delay is None or delay > 0:
+            if self._urgent or (self._stale and (delay is None or delay > FRAME_INTERVAL_S)):
+                self._publish(force=True)  # idle now: the clients get the newest state
+            with self._cond:
+                if not self._commands and not self.closed:
+                    self._cond.wait(0.5 if delay is None else min(delay, 0.5))
+            return
+        self._scan()
+
+    def _delay(self) -> float | None:
+        """Seconds until the next scan may start; None: no scan is due (STOP, pause)."""
+        if self.cpu.mode != "RUN":
+            return None
+        now = time.perf_counter()
+        share = self._share_wait(now)
+        if self._scans_left > 0:
+            return share
+        if self.time_mode == "pause":
+            return None
+        if self.time_mode == "fast":
+            return share
+        if self._due < now - max(self.cpu.cycle_ms / 1000.0, CATCH_UP_S):
+            # The first scan, or far behind (a hold, a long scan): start the rhythm again from
+            # now, as a real CPU's cycle simply grows, rather than race through the lost cycles.
+            # A few cycles lost to a busy machine are made up, so the pace stays 1:1.
+            self._due = now
+        return max(self._due - now, share)
+
+    def _share_wait(self, now: float) -> float:
+        busy = self._busy
+        while busy and busy[0][0] < now - SHARE_WINDOW_S:
+            self._busy_total -= busy.popleft()[1]
+        used = self._busy_total
+        allowed = self.cpu_share * SHARE_WINDOW_S
+        return 0.0 if used <= allowed else (used - allowed) / self.cpu_share
+
+    def _scan(self) -> None:
+        cpu = self.cpu
+        engine = cpu.engine
+        now = time.perf_counter()
+        capture = now - self._last_capture >= FRAME_INTERVAL_S
+        sampled = self._select_variants(capture)
+        recorders = [self._recorder(key) for key in sampled]
+        for recorder in recorders:
+            recorder.begin()
+        if self.time_mode == "real":
+            self._follow_wall_clock(now)
+        cycle = cpu.cycle_ms / 1000.0
+        # Paced scans start at most CATCH_UP_S after they were due; after unpaced ones (fast,
+        # run_scans) the rhythm starts again from now.
+        late = max(cycle, CATCH_UP_S)
+        base = self._due if now - late <= self._due <= now + cycle else now
+        self._due = base + cycle
+        self._held_time = 0.0
+        started = time.perf_counter()
+        cpu.scan()
+        elapsed = time.perf_counter() - started - self._held_time
+        if self._abort is not None:
+            action, cold = self._abort
+            self._abort = None
+            if action == "restart":
+                self._restart(cold)
+        if recorders:
+            self._last_capture = now
+            for key, recorder in zip(sampled, recorders, strict=True):
+                status = recorder.finish(engine.scans)
+                if status is not None:
+                    self._block_status[key] = status
+        self._count(elapsed)
+        if self._scans_left > 0:
+            self._scans_left -= 1
+        if self._pause_after_scan:
+            self._pause_after_scan = False
+            if self.time_mode != "pause":
+                self._resume_mode = self.time_mode
+            self.time_mode = "pause"
+        self._sample_trends()
+        self._stale = True
+        self._publish(force=self._answer_pending)
+        self._answer_pending = False
+        # The share limiter counts the thread's whole work for the scan, not only the program's.
+        finished = time.perf_counter()
+        spent = finished - now - self._held_time
+        self._busy.append((finished, spent))
+        self._busy_total += spent
+
+    def _follow_wall_clock(self, now: float) -> None:
+        m = self.engine.m
+        if self._real_origin is None:
+            self._real_origin = (now, m.now)
+        wall_ms = self._real_origin[1] + int((now - self._real_origin[0]) * 1000)
+        if wall_ms > m.now:
+            m.now = wall_ms
+
+    def _count(self, elapsed: float) -> None:
+        ms = elapsed * 1000.0
+        stats = self._stats
+        if not stats:
+            self._stats = [ms, ms, ms, ms, 1.0]
+            return
+        stats[0] = ms
+        stats[1] = min(stats[1], ms)
+        stats[2] = max(stats[2], ms)
+        stats[3] += ms
+        stats[4] += 1.0
+
+    def _sample_trends(self) -> None:
+        cpu = self.cpu
+        for view in list(self.clients.values()):
+            if view.trend:
+                values = [_read_or_none(t, cpu) for t in view.trend]
+                sample = TrendSample(scan=cpu.scans, time_ms=cpu.time_ms, values=values)
+                view.samples.append(sample)
+                view.history.append(sample)
+
+    # -- snapshots -------------------------------------------------------------------------------
+    def cpu_state(self) -> CpuState:
+        cpu = self.cpu
+        stats = self._stats
+        cycle = (
+            CycleStats(
+                last_ms=round(stats[0], 4),
+                min_ms=round(stats[1], 4),
+                max_ms=round(stats[2], 4),
+                avg_ms=round(stats[3] / stats[4], 4),
+            )
+            if stats
+            else None
+        )
+        mode = "HOLD" if self.held is not None else cpu.mode
+        engine = cpu.engine
+        forced = [
+            ForcedValue(address=f"{area}{byte}.{bit}", value=value)
+            for area, table in (("I", engine.forced_inputs), ("Q", engine.forced_outputs))
+            for (byte, bit), value in sorted(table.items())
+        ]
+        return CpuState(
+            mode=mode,
+            time_mode=self.time_mode,
+            cycle_ms=cpu.cycle_ms,
+            scans=cpu.scans,
+            time_ms=cpu.time_ms,
+            stop_code=cpu.stop_code,
+            stop_reason=cpu.stop_reason,
+            cycle=cycle,
+            forced=forced,
+        )
+
+    def _publish(self, force: bool = False) -> None:
+        if not self.clients:
+            return
+        now = time.perf_counter()
+        if not force and not self._urgent and now < self._next_publish:
+            return
+        if now >= self._next_publish:  # ~30 a second on average, whatever the cycle time
+            self._next_publish = max(self._next_publish + FRAME_INTERVAL_S, now)
+        self._urgent = False
+        self._stale = False
+        values: dict[str, WatchValue] = {}
+        for view in list(self.clients.values()):
+            for text, target in view.watch_targets.items():
+                if text not in values:
+                    values[text] = self._watch_value(text, target)
+        self._seq += 1
+        self.snapshot = Snapshot(
+            self._seq,
+            self.cpu_state(),
+            values,
+            dict(self._block_status),
+            self.hold_view,
+            self.engine.diagnostic_count,
+        )
+        emit = self.emit
+        if emit is None:
+            return
+        snapshot = self.snapshot
+        for client, view in list(self.clients.items()):
+            frame = view.state.frame(snapshot, view, self)
+            if frame is not None:
+                emit(client, frame.model_dump_json())
+
+    def _watch_value(self, text: str, target: targets.Target | str) -> WatchValue:
+        if isinstance(target, str):
+            if target != "local":
+                return WatchValue(value=None, error=target)
+            held = self.held
+            if held is None:
+                return WatchValue(value=None, error="shown while the CPU holds in a block")
+            try:
+                slot = local_slot(held, text)
+            except MonitorError as error:
+                return WatchValue(value=None, error=str(error))
+            regs = held.regs
+            return WatchValue(value=read_slot(slot, held.frame, regs[14], regs[12], held.params))
+        forced = self._forced(target)
+        if forced and targets.is_output(target) and target.direct is not None:
+            # What the module gets: a forced output wins over what the program wrote.
+            direct = target.direct
+            target = targets.Target(
+                target.text, target.type, Direct(Area.PQ, direct.width, direct.byte, direct.bit)
+            )
+        try:
+            return WatchValue(value=targets.read(target, self.cpu), forced=forced)
+        except targets.TargetError as error:
+            return WatchValue(value=None, error=str(error))
+
+    def _forced(self, target: targets.Target) -> bool:
+        direct = target.direct
+        if direct is None:
+            return False
+        engine = self.engine
+        if targets.is_input(target):
+            table = engine.forced_inputs
+        elif targets.is_output(target):
+            table = engine.forced_outputs
+        else:
+            return False
+        width = int(direct.width)
+        if width == 1:
+            return (direct.byte, direct.bit) in table
+        return any((direct.byte + k // 8, k % 8) in table for k in range(width))
+
+
+def _read_or_none(target: targets.Target, cpu: Cpu) -> Value:
+    try:
+        return targets.read(target, cpu)
+    except targets.TargetError:
+        return None
+
+
+def _base_name(path: str) -> str:
+    return path.replace("\\", "/").rsplit("/", 1)[-1].casefold()
+
+
+def _changed_blocks(old: Program, new: Program) -> list[str]:
+    changed = []
+    for key in sorted(set(old.blocks) | set(new.blocks), key=lambda k: (k[0].value, k[1])):
+        a, b = old.blocks.get(key), new.blocks.get(key)
+        if a is None or b is None or _content(a) != _content(b):
+            changed.append(f"{key[0].value}{key[1]}")
+    return changed
+
+
+def _content(block: Any) -> tuple[object, ...]:
+    """A block as the CPU sees it: its code without source positions, its data and layout."""
+    code = [(i.op, i.operand, i.operand2, i.label, i.call) for i in block.code]
+    return (code, block.labels, block.data, block.interface, block.instance_of, block.temp_bytes)
+
+
+def _same_layout(old_block: Any, new_block: Any, old: Program, new: Program) -> bool:
+    if old_block.interface != new_block.interface or old_block.instance_of != new_block.instance_of:
+        return False
+    if new_block.instance_of is None:
+        return True
+    a = old.get(BlockKind.FB, new_block.instance_of)
+    b = new.get(BlockKind.FB, new_block.instance_of)
+    return a is not None and b is not None and a.interface == b.interface

@@ -1,0 +1,56 @@
+"""Bit patterns of elementary S7 types as the values a monitor shows (JSON-friendly)."""
+
+from __future__ import annotations
+
+import math
+import struct
+
+from nasaq.ir import types as ir_types
+
+Value = bool | int | float | str | None
+
+# The types a monitor shows as one value: those that fit an accumulator (and the TOD alias).
+ELEMENTARY_BITS = {name: ir_types.ELEMENTARY_BITS[name] for name in ir_types.ACCU_TYPES} | {
+    alias: ir_types.ELEMENTARY_BITS[name]
+    for alias, name in ir_types.TYPE_ALIASES.items()
+    if name in ir_types.ACCU_TYPES
+}
+_S5_BASES = (10, 100, 1000, 10000)
+
+
+def signed(pattern: int, bits: int) -> int:
+    return pattern - (1 << bits) if pattern >> (bits - 1) & 1 else pattern
+
+
+def real(pattern: int) -> float | str:
+    value: float = struct.unpack(">f", (pattern & 0xFFFFFFFF).to_bytes(4, "big"))[0]
+    if math.isnan(value):
+        return "NaN"
+    if math.isinf(value):
+        return "+Inf" if value > 0 else "-Inf"
+    return value
+
+
+def s5time_ms(pattern: int) -> int:
+    digits = pattern & 0xFFF
+    count = (digits >> 8 & 15) * 100 + (digits >> 4 & 15) * 10 + (digits & 15)
+    return count * _S5_BASES[pattern >> 12 & 3]
+
+
+def decode(type_name: str, pattern: int | None) -> Value:
+    """``pattern`` (unsigned, of the type's width) read as ``type_name``; None stays None."""
+    if pattern is None:
+        return None
+    if type_name == "BOOL":
+        return bool(pattern & 1)
+    if type_name == "INT":
+        return signed(pattern, 16)
+    if type_name in ("DINT", "TIME"):
+        return signed(pattern, 32)
+    if type_name == "REAL":
+        return real(pattern)
+    if type_name == "CHAR":
+        return chr(pattern & 0xFF)
+    if type_name == "S5TIME":
+        return s5time_ms(pattern)
+    return pattern

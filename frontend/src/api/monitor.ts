@@ -1,0 +1,321 @@
+// Generated from backend/nasaq/monitor/protocol.py; do not edit. Regenerate with
+// `.venv/bin/python -m nasaq.monitor.typescript --write`.
+
+export const PROTOCOL_VERSION = 1;
+
+export type ClientMessage =
+  | SubscribeCpu
+  | Watch
+  | OpenBlock
+  | Trend
+  | Run
+  | Stop
+  | Restart
+  | SetTime
+  | SetInput
+  | Modify
+  | Force
+  | Unforce
+  | SetBreakpoint
+  | ClearBreakpoint
+  | Continue
+  | Step
+  | RunScans;
+
+/** CPU state in every frame where it changed (mode, scans, clock, cycle statistic). */
+export interface SubscribeCpu {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'subscribe_cpu';
+  on?: boolean;
+}
+
+/**
+ * Replaces the watch list: addresses (`MW10`, `DB1.DBW2`, `T1`), symbols
+ * (`"Motor"`), DB and instance-DB members (`DB1.level`, `"Tank".level`, `DB5.t1.ET`)
+ * and, while the CPU holds, locals of the held block (`#count`).
+ */
+export interface Watch {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'watch';
+  entries: string[];
+}
+
+/** The block whose status (per STL instruction, per SCL line) the frames carry; None: none. */
+export interface OpenBlock {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'open_block';
+  block: string | null;
+}
+
+/** Values sampled at the end of every scan, sent as batches of samples. */
+export interface Trend {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'trend';
+  entries: string[];
+}
+
+export interface Run {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'run';
+}
+
+export interface Stop {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'stop';
+}
+
+/** Warm restart (OB100), or cold restart (OB102) with `cold`; the CPU goes to RUN. */
+export interface Restart {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'restart';
+  cold?: boolean;
+}
+
+export interface SetTime {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'set_time';
+  mode: 'virtual' | 'real' | 'fast' | 'pause';
+  cycle_ms?: number | null;
+}
+
+/** Drives a peripheral input (`I0.3`, `IW4`, or an input's symbol). */
+export interface SetInput {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'set_input';
+  address: string;
+  value: boolean | number | string | null;
+}
+
+/** Writes a value once (memory, DB member, or a local of the held block). */
+export interface Modify {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'modify';
+  target: string;
+  value: boolean | number | string | null;
+}
+
+export interface Force {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'force';
+  address: string;
+  value: boolean | number | string | null;
+}
+
+/** Removes the force of `address`, or every force when it is None. */
+export interface Unforce {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'unforce';
+  address?: string | null;
+}
+
+/**
+ * `condition`: `<operand> <op> <value>` with op one of = == <> < > <= >=, the operand an
+ * address, symbol, `#local`, or a register (RLO, STA, ACCU1, ACCU2, AR1, AR2, OV, OS, BR).
+ */
+export interface SetBreakpoint {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'set_breakpoint';
+  location: Location;
+  condition?: string | null;
+}
+
+/** Clears breakpoint `id`, or all of them when it is None. */
+export interface ClearBreakpoint {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'clear_breakpoint';
+  id?: number | null;
+}
+
+export interface Continue {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'continue';
+}
+
+/**
+ * From a hold: to the next STL instruction, SCL statement, network, or the next scan's end.
+ * `into` enters called blocks; without it a step stays in the block (or returns to its caller).
+ * From STOP or pause, `scan` runs one scan.
+ */
+export interface Step {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'step';
+  by: 'instruction' | 'statement' | 'network' | 'scan';
+  into?: boolean;
+}
+
+/** Runs `count` scans, then pauses. */
+export interface RunScans {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'run_scans';
+  count: number;
+}
+
+/**
+ * Where a breakpoint goes: a source line (`file` + `line`, STL or SCL), or a block with
+ * an STL instruction index or a network (1-based), or a block with a line of its source.
+ */
+export interface Location {
+  file?: string | null;
+  block?: string | null;
+  line?: number | null;
+  network?: number | null;
+  instruction?: number | null;
+}
+
+export type ServerMessage = Hello | Ack | ProtocolError | Frame;
+
+export interface Hello {
+  type: 'hello';
+  session: string;
+  /** This connection's number (e.g. for the trend CSV export) */
+  client: number;
+  protocol: number;
+  max_frames_per_second: number;
+  max_watch_entries: number;
+}
+
+export interface Ack {
+  type: 'ack';
+  ref: number | null;
+  result: Record<string, unknown> | null;
+}
+
+/** A message the server could not carry out; `code` is from the diagnostics catalogue. */
+export interface ProtocolError {
+  type: 'error';
+  ref: number | null;
+  code: string;
+  key: string;
+  message: string;
+  params: Record<string, unknown>;
+}
+
+export interface Frame {
+  type: 'frame';
+  seq: number;
+  cpu: CpuState | null;
+  watch: Record<string, WatchValue> | null;
+  block: BlockStatus | null;
+  trend: TrendSample[] | null;
+  hold: HoldState | null;
+  /** The hold of the previous frame has ended */
+  released: boolean;
+  diagnostics: DiagnosticEntry[] | null;
+}
+
+export interface CpuState {
+  mode: 'RUN' | 'STOP' | 'HOLD';
+  time_mode: 'virtual' | 'real' | 'fast' | 'pause';
+  cycle_ms: number;
+  scans: number;
+  time_ms: number;
+  stop_code: string | null;
+  stop_reason: string | null;
+  cycle: CycleStats | null;
+  forced: ForcedValue[];
+}
+
+/** A watch entry's value; `forced` when a force holds it; `error` when it has none. */
+export interface WatchValue {
+  value: boolean | number | string | null;
+  forced: boolean;
+  error: string | null;
+}
+
+/** One sampled execution of the open block: rows for the instructions that ran. */
+export interface BlockStatus {
+  block: string;
+  language: 'stl' | 'scl';
+  scan: number;
+  instructions: InstructionStatus[];
+  lines: LineStatus[];
+}
+
+export interface TrendSample {
+  scan: number;
+  time_ms: number;
+  values: Array<boolean | number | string | null>;
+}
+
+/** Where the CPU holds mid-scan: the innermost block first in `call_stack`. */
+export interface HoldState {
+  reason: 'breakpoint' | 'step';
+  breakpoint: number | null;
+  location: StackFrame;
+  registers: Record<string, number>;
+  locals: Variable[];
+  call_stack: StackFrame[];
+}
+
+export interface DiagnosticEntry {
+  time_ms: number;
+  code: string;
+  message: string;
+  block: string | null;
+  network: number | null;
+  line: number | null;
+}
+
+/** Wall-clock milliseconds the scans took (the program's work, not the cycle wait). */
+export interface CycleStats {
+  last_ms: number;
+  min_ms: number;
+  max_ms: number;
+  avg_ms: number;
+}
+
+export interface ForcedValue {
+  address: string;
+  value: number;
+}
+
+/** The registers as STL instruction `index` left them (STEP 7's block status columns). */
+export interface InstructionStatus {
+  index: number;
+  line: number | null;
+  rlo: number;
+  sta: number;
+  accu1: number;
+  accu2: number;
+  stw: number;
+  ar1: number;
+  ar2: number;
+  operand: boolean | number | string | null;
+}
+
+/** An SCL line: the variables its code read or wrote, with their last values. */
+export interface LineStatus {
+  line: number;
+  values: Record<string, boolean | number | string | null>;
+}
+
+export interface StackFrame {
+  block: string;
+  instruction: number;
+  line: number | null;
+  file: string | null;
+  network: number | null;
+}
+
+export interface Variable {
+  name: string;
+  type: string;
+  value: boolean | number | string | null;
+}
