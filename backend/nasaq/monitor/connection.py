@@ -2,10 +2,11 @@
 
 The reader checks each message against the protocol (an unreadable one is answered at once) and
 forwards it to the worker, which carries it out in the session's CPU thread and answers. The
-writer sends the answers, then the newest frame: a frame that arrives while the previous one is
-still waiting is merged into it (``frames.merge``), never queued, so a slow client gets fewer,
-fuller frames and costs nobody else anything. A client that takes no data for ``send_timeout``
-seconds, or leaves more than ``MAX_PENDING`` messages unanswered, is disconnected with MON608.
+writer sends the answers, then the frames that came meanwhile merged into one (``frames.merge``),
+so a slow client gets fewer, fuller frames and costs nobody else anything; the frames waiting for a
+client that does not read at all are folded every ``MAX_WAITING_FRAMES``. A client that takes
+no data for ``send_timeout`` seconds, or leaves more than ``MAX_PENDING`` messages unanswered, is
+disconnected with MON608.
 """
 
 from __future__ import annotations
@@ -28,6 +29,7 @@ from nasaq.monitor.worker import error_json, malformed
 
 MAX_MESSAGE_BYTES = 64 * 1024
 MAX_PENDING = 256
+MAX_WAITING_FRAMES = 64
 CLOSE_POLICY = 1008
 
 
@@ -42,7 +44,7 @@ class Connection:
         self.client = 0
         self.wake = asyncio.Event()
         self.replies: deque[str] = deque()
-        self.frame: str | None = None
+        self.frames: list[str] = []  # waiting to be sent, merged into one when sent
         self.pending = 0  # messages forwarded and not answered yet
         self.closing: tuple[int, str] | None = None
         self.session_closed = False
@@ -83,7 +85,9 @@ class Connection:
             self.pending -= 1
             self.replies.append(text)
         elif kind == "frame":
-            self.frame = text if self.frame is None else merge(self.frame, text)
+            self.frames.append(text)
+            if len(self.frames) >= MAX_WAITING_FRAMES:  # a client that does not read: fold
+                self.frames = [merge(self.frames)]
         else:
             self.session_closed = True
             self.replies.append(error_json(None, MonitorError("MON614")))
@@ -137,9 +141,9 @@ class Connection:
             while self.replies:
                 if not await self._send(self.replies.popleft()):
                     return
-            if self.frame is not None:
-                frame, self.frame = self.frame, None
-                if not await self._send(frame):
+            if self.frames:
+                frames, self.frames = self.frames, []
+                if not await self._send(merge(frames)):
                     return
             if self.session_closed:
                 self.closing = (1000, "session closed")

@@ -2,8 +2,8 @@
 
 A client's frame carries only the changes since its previous frame (``FrameState``, one per
 client, kept where the session runs). When a socket cannot take frames as fast as they come, the
-server does not queue them: ``merge`` folds a newer frame into the one still waiting, so the
-client gets one frame with the newest state and every trend sample and diagnostic entry.
+server does not send them one by one: ``merge`` folds the waiting frames into one, so the client
+gets one frame with the newest state, the diagnostic entries and the newest trend samples.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from nasaq.monitor import protocol as p
 if TYPE_CHECKING:
     from nasaq.monitor.session import ClientView, Session, Snapshot
 
-MAX_MERGED_SAMPLES = 20_000
+MAX_MERGED_SAMPLES = 5_000  # trend samples a waiting frame keeps (the newest)
 
 
 class FrameState:
@@ -80,23 +80,26 @@ class FrameState:
         return frame if changed else None
 
 
-def merge(older: str, newer: str) -> str:
-    """One frame (JSON text) with the effect of ``older`` followed by ``newer``."""
-    a: dict[str, Any] = json.loads(older)
-    b: dict[str, Any] = json.loads(newer)
-    merged = dict(a)
-    merged["seq"] = b["seq"]
-    for key in ("cpu", "block"):
-        if b.get(key) is not None:
-            merged[key] = b[key]
-    if b.get("watch"):
-        merged["watch"] = {**(a.get("watch") or {}), **b["watch"]}
-    for key in ("trend", "diagnostics"):
-        if b.get(key):
-            merged[key] = ((a.get(key) or []) + b[key])[-MAX_MERGED_SAMPLES:]
-    if b.get("released"):
-        merged["released"] = True
-        merged["hold"] = b.get("hold")
-    elif b.get("hold") is not None:
-        merged["hold"] = b["hold"]
+def merge(texts: list[str]) -> str:
+    """One frame (JSON text) with the effect of ``texts`` applied in order; each is parsed once,
+    so folding many waiting frames costs what reading them once does."""
+    if len(texts) == 1:
+        return texts[0]
+    merged: dict[str, Any] = json.loads(texts[0])
+    for text in texts[1:]:
+        b: dict[str, Any] = json.loads(text)
+        merged["seq"] = b["seq"]
+        for key in ("cpu", "block"):
+            if b.get(key) is not None:
+                merged[key] = b[key]
+        if b.get("watch"):
+            merged["watch"] = {**(merged.get("watch") or {}), **b["watch"]}
+        for key in ("trend", "diagnostics"):
+            if b.get(key):
+                merged[key] = ((merged.get(key) or []) + b[key])[-MAX_MERGED_SAMPLES:]
+        if b.get("released"):
+            merged["released"] = True
+            merged["hold"] = b.get("hold")
+        elif b.get("hold") is not None:
+            merged["hold"] = b["hold"]
     return json.dumps(merged, separators=(",", ":"))
