@@ -231,7 +231,7 @@ def executed_per_scan(source: str, scans: int = 5) -> int:
     """Compiles ``source`` and runs a few scans: the instructions each scan executed (they must
     all be the same)."""
     from nasaq.cpu import Cpu, Profile
-    from nasaq.monitor.session import compile_download
+    from nasaq.monitor.download import compile_download
 
     program = compile_download(_sources(source))
     cpu = Cpu(program, Profile.S7_300, CYCLE_MS)
@@ -693,8 +693,9 @@ def measure_monitoring(source: str, plan: Plan) -> tuple[Phase, list[Phase]]:
     """The bare CPU's scan rate (informational) and the session's phases: unmonitored, the open
     block monitored, debugging (a breakpoint that never fires, with the block open)."""
     from nasaq.cpu import Cpu, Profile
+    from nasaq.monitor.download import compile_download
     from nasaq.monitor.protocol import Location
-    from nasaq.monitor.session import ClientView, Session, compile_download
+    from nasaq.monitor.session import ClientView, Session
 
     # cpu_share=1.0: the session's CPU-share limiter must not cap the fast mode's scan rate.
     session = Session("bench", _sources(source), Profile.S7_300, CYCLE_MS, "virtual", cpu_share=1.0)

@@ -30,15 +30,14 @@ from typing import Any, TypeVar
 
 from nasaq.cpu import Cpu, Profile
 from nasaq.cpu.codegen.compiler import Compiled
-from nasaq.ir import Area, BlockKind, Direct, Program
-from nasaq.lang.stl import SourceFile, compile_sources
-from nasaq.monitor import targets
+from nasaq.ir import BlockKind
+from nasaq.lang.stl import SourceFile
+from nasaq.monitor import targets, watch
 from nasaq.monitor.block_info import (
     BlockInfo,
     block_info,
     breakpoint_indices,
     parse_block_name,
-    read_slot,
 )
 from nasaq.monitor.debugger import (
     Debugger,
@@ -46,10 +45,10 @@ from nasaq.monitor.debugger import (
     OperatorStopError,
     call_stack,
     hold_state,
-    local_slot,
     modify_local,
     parse_condition,
 )
+from nasaq.monitor.download import carry_over, compile_download
 from nasaq.monitor.errors import MonitorError
 from nasaq.monitor.frames import FrameState
 from nasaq.monitor.protocol import (
@@ -78,7 +77,6 @@ CATCH_UP_S = 0.1  # paced scans this late are made up; later ones are lost (the 
 MAX_WATCH = 500
 MAX_TREND = 32
 TREND_SAMPLES = 20_000  # kept per client until sent
-MAX_DB_BYTES = 16 * 1024 * 1024
 SHARE_WINDOW_S = 0.2
 CODE_KINDS = (BlockKind.OB, BlockKind.FB, BlockKind.FC)
 
@@ -105,21 +103,6 @@ class Snapshot:
     blocks: dict[Key, BlockStatus]
     hold: HoldState | None
     diagnostics: int  # entries ever made in the diagnostic buffer
-
-
-def compile_download(sources: list[SourceFile]) -> Program:
-    result = compile_sources(sources)
-    errors = [d for d in result.diagnostics if d.severity.value == "error"]
-    if errors:
-        first = errors[0]
-        where = f"{first.span.file}:{first.span.line}:{first.span.column}" if first.span else ""
-        raise MonitorError(
-            "MON611", count=len(errors), first=f"{where} {first.code} {first.message}".strip()
-        )
-    size = sum(len(b.data) for b in result.program.blocks.values())
-    if size > MAX_DB_BYTES:
-        raise MonitorError("MON616", reason=f"{size} bytes of data blocks, at most {MAX_DB_BYTES}")
-    return result.program
 
 
 class Session:
@@ -396,27 +379,8 @@ class Session:
         if self.cpu.mode != "STOP":
             raise MonitorError("MON607", action="A download", reason="switch the CPU to STOP first")
         program = compile_download(sources)
-        old = self.cpu
-        cpu = Cpu(program, self.profile, old.cycle_ms)
-        changed = _changed_blocks(self.program, program)
-        for area in (Area.M, Area.PI):
-            fresh = cpu.engine.memory.area(area)
-            fresh[:] = old.engine.memory.area(area)[: len(fresh)]
-        for number, data in old.engine.memory.dbs.items():
-            new_block = program.get(BlockKind.DB, number)
-            old_block = self.program.get(BlockKind.DB, number)
-            target = cpu.engine.memory.dbs.get(number)
-            if (
-                target is not None
-                and new_block is not None
-                and old_block is not None
-                and len(target) == len(data)
-                and _same_layout(old_block, new_block, self.program, program)
-            ):
-                target[:] = data
-        cpu.engine.m.now = old.engine.m.now
-        cpu.engine.diagnostic_buffer = list(old.engine.diagnostic_buffer)
-        cpu.engine.diagnostic_count = old.engine.diagnostic_count
+        cpu = Cpu(program, self.profile, self.cpu.cycle_ms)
+        changed = carry_over(self.program, self.cpu, program, cpu)
         self.sources = list(sources)
         self.program = program
         self.cpu = cpu
@@ -436,21 +400,7 @@ class Session:
     def do_watch(self, client: int, entries: list[str]) -> dict[str, object]:
         if len(entries) > MAX_WATCH:
             raise MonitorError("MON605", what="watch", count=len(entries), limit=MAX_WATCH)
-        resolved: dict[str, targets.Target | str] = {}
-        report: list[dict[str, object]] = []
-        for text in entries:
-            if text.strip().startswith("#"):
-                resolved[text] = "local"
-                report.append({"entry": text, "type": "local"})
-                continue
-            try:
-                target = self._memory_target(text)
-            except targets.TargetError as error:
-                resolved[text] = str(error)
-                report.append({"entry": text, "code": error.code, "error": str(error)})
-                continue
-            resolved[text] = target
-            report.append({"entry": text, "type": target.type})
+        resolved, report = watch.resolve_entries(entries, self.program, self.cpu)
         view = self.view(client)
         view.watch = list(entries)
         view.watch_targets = resolved
@@ -478,10 +428,7 @@ class Session:
         return {"block": info.name, "language": info.language, "instructions": len(info.lines)}
 
     def _memory_target(self, text: str) -> targets.Target:
-        """The target ``text`` names; MON603 also when this CPU has no such address."""
-        target = targets.resolve(text, self.program)
-        targets.read(target, self.cpu)  # raises for an address beyond the CPU's memory
-        return target
+        return watch.memory_target(text, self.program, self.cpu)
 
     def _locate(self, location: Location) -> tuple[BlockInfo, list[int]]:
         if location.block is not None:
@@ -748,7 +695,7 @@ class Session:
         cpu = self.cpu
         for view in list(self.clients.values()):
             if view.trend:
-                values = [_read_or_none(t, cpu) for t in view.trend]
+                values = [watch.read_or_none(t, cpu) for t in view.trend]
                 sample = TrendSample(scan=cpu.scans, time_ms=cpu.time_ms, values=values)
                 view.samples.append(sample)
                 view.history.append(sample)
@@ -800,7 +747,7 @@ class Session:
         for view in list(self.clients.values()):
             for text, target in view.watch_targets.items():
                 if text not in values:
-                    values[text] = self._watch_value(text, target)
+                    values[text] = watch.watch_value(text, target, self.cpu, self.held)
         self._seq += 1
         self.snapshot = Snapshot(
             self._seq,
@@ -819,79 +766,6 @@ class Session:
             if frame is not None:
                 emit(client, frame.model_dump_json())
 
-    def _watch_value(self, text: str, target: targets.Target | str) -> WatchValue:
-        if isinstance(target, str):
-            if target != "local":
-                return WatchValue(value=None, error=target)
-            held = self.held
-            if held is None:
-                return WatchValue(value=None, error="shown while the CPU holds in a block")
-            try:
-                slot = local_slot(held, text)
-            except MonitorError as error:
-                return WatchValue(value=None, error=str(error))
-            regs = held.regs
-            return WatchValue(value=read_slot(slot, held.frame, regs[14], regs[12], held.params))
-        forced = self._forced(target)
-        if forced and targets.is_output(target) and target.direct is not None:
-            # What the module gets: a forced output wins over what the program wrote.
-            direct = target.direct
-            target = targets.Target(
-                target.text, target.type, Direct(Area.PQ, direct.width, direct.byte, direct.bit)
-            )
-        try:
-            return WatchValue(value=targets.read(target, self.cpu), forced=forced)
-        except targets.TargetError as error:
-            return WatchValue(value=None, error=str(error))
-
-    def _forced(self, target: targets.Target) -> bool:
-        direct = target.direct
-        if direct is None:
-            return False
-        engine = self.engine
-        if targets.is_input(target):
-            table = engine.forced_inputs
-        elif targets.is_output(target):
-            table = engine.forced_outputs
-        else:
-            return False
-        width = int(direct.width)
-        if width == 1:
-            return (direct.byte, direct.bit) in table
-        return any((direct.byte + k // 8, k % 8) in table for k in range(width))
-
-
-def _read_or_none(target: targets.Target, cpu: Cpu) -> Value:
-    try:
-        return targets.read(target, cpu)
-    except targets.TargetError:
-        return None
-
 
 def _base_name(path: str) -> str:
     return path.replace("\\", "/").rsplit("/", 1)[-1].casefold()
-
-
-def _changed_blocks(old: Program, new: Program) -> list[str]:
-    changed = []
-    for key in sorted(set(old.blocks) | set(new.blocks), key=lambda k: (k[0].value, k[1])):
-        a, b = old.blocks.get(key), new.blocks.get(key)
-        if a is None or b is None or _content(a) != _content(b):
-            changed.append(f"{key[0].value}{key[1]}")
-    return changed
-
-
-def _content(block: Any) -> tuple[object, ...]:
-    """A block as the CPU sees it: its code without source positions, its data and layout."""
-    code = [(i.op, i.operand, i.operand2, i.label, i.call) for i in block.code]
-    return (code, block.labels, block.data, block.interface, block.instance_of, block.temp_bytes)
-
-
-def _same_layout(old_block: Any, new_block: Any, old: Program, new: Program) -> bool:
-    if old_block.interface != new_block.interface or old_block.instance_of != new_block.instance_of:
-        return False
-    if new_block.instance_of is None:
-        return True
-    a = old.get(BlockKind.FB, new_block.instance_of)
-    b = new.get(BlockKind.FB, new_block.instance_of)
-    return a is not None and b is not None and a.interface == b.interface
