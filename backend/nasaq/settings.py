@@ -33,6 +33,11 @@ class Settings(BaseSettings):
         default=_REPO_ROOT / "frontend" / "dist",
         description="Folder of the built front end served at '/'.",
     )
+    examples_dir: Path = Field(
+        default=_REPO_ROOT / "examples" / "projects",
+        description="Example projects (one folder each) imported on the first start only; "
+        "a missing folder imports none.",
+    )
     log_level: str = Field(default="info", description="Log level of the server.")
     session_workers: int | None = Field(
         default=None,

@@ -15,7 +15,7 @@ from nasaq.settings import Settings
 # Test helper modules live beside the tests that use them; this file is loaded however pytest is
 # started (with or without backend/pyproject.toml as its config), so it puts them on the path.
 _HERE = Path(__file__).resolve().parent
-for _folder in ("cpu", "lang", "lang/stl", "lang/scl"):
+for _folder in ("cpu", "lang", "lang/stl", "lang/scl", "workbench"):
     if str(_HERE / _folder) not in sys.path:
         sys.path.insert(0, str(_HERE / _folder))
 
@@ -37,7 +37,10 @@ def dist(tmp_path: Path) -> Path:
 
 @pytest.fixture
 def settings(tmp_path: Path, dist: Path) -> Settings:
-    return Settings(data_dir=tmp_path / "data", frontend_dist=dist)
+    # No example projects: a test starts from an empty database unless it asks for them.
+    return Settings(
+        data_dir=tmp_path / "data", frontend_dist=dist, examples_dir=tmp_path / "no-examples"
+    )
 
 
 @pytest.fixture

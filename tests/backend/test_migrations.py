@@ -36,11 +36,37 @@ def test_models_match_migrations(settings: Settings) -> None:
         engine.dispose()
 
 
-def test_downgrade_to_base_removes_the_table(settings: Settings) -> None:
+def test_downgrade_to_base_removes_the_tables(settings: Settings) -> None:
     upgrade_to_head(settings)
     command.downgrade(alembic_config(settings), "base")
     engine = create_engine(settings.effective_database_url)
     try:
-        assert "projects" not in inspect(engine).get_table_names()
+        left = set(inspect(engine).get_table_names())
+        assert not {"projects", "project_files", "app_state"} & left
+    finally:
+        engine.dispose()
+
+
+def test_0002_adds_project_files_and_app_state_and_downgrades_to_0001(settings: Settings) -> None:
+    upgrade_to_head(settings)
+    config = alembic_config(settings)
+    engine = create_engine(settings.effective_database_url)
+    try:
+        tables = set(inspect(engine).get_table_names())
+        assert {"projects", "project_files", "app_state"} <= tables
+        with engine.begin() as connection:
+            connection.exec_driver_sql(
+                "INSERT INTO projects (name, description, created_at, updated_at)"
+                " VALUES ('Kept', '', '2026-01-01 00:00:00', '2026-01-01 00:00:00')"
+            )
+        command.downgrade(config, "0001")
+        tables = set(inspect(engine).get_table_names())
+        assert "project_files" not in tables
+        assert "app_state" not in tables
+        with engine.connect() as connection:
+            names = connection.exec_driver_sql("SELECT name FROM projects").scalars().all()
+        assert names == ["Kept"]
+        command.upgrade(config, "head")
+        assert "project_files" in inspect(engine).get_table_names()
     finally:
         engine.dispose()

@@ -11,7 +11,7 @@ from fastapi import APIRouter, FastAPI
 from fastapi.middleware.gzip import GZipMiddleware
 
 from nasaq import __version__
-from nasaq.api import health, projects, sessions
+from nasaq.api import archive, files, health, projects, sessions, workbench
 from nasaq.api.docs import install_docs
 from nasaq.api.errors import install_error_handlers
 from nasaq.api.frontend import install_frontend
@@ -20,6 +20,7 @@ from nasaq.monitor.pool import WorkerPool
 from nasaq.settings import Settings, get_settings
 from nasaq.storage.database import create_db_engine, session_factory
 from nasaq.storage.migrate import upgrade_to_head
+from nasaq.workbench.examples import seed_examples
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:
@@ -32,6 +33,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         engine = create_db_engine(settings)
         app.state.engine = engine
         app.state.sessions = session_factory(engine)
+        seed_examples(app.state.sessions, settings.examples_dir)
         simulations: WorkerPool = app.state.simulations
         simulations.start(asyncio.get_running_loop())
         reaper = asyncio.create_task(_reap(simulations))
@@ -60,7 +62,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
 
     api = APIRouter(prefix="/api")
     api.include_router(health.router)
+    api.include_router(archive.router)  # before projects: /projects/import is no project id
     api.include_router(projects.router)
+    api.include_router(files.router)
+    api.include_router(workbench.router)
     api.include_router(sessions.router)
     app.include_router(api)
     install_docs(app)

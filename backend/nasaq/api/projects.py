@@ -59,7 +59,8 @@ _ERRORS: dict[int | str, dict[str, object]] = {
 }
 
 
-def _found(session: DbSession, project_id: int) -> Project:
+def found_project(session: DbSession, project_id: int) -> Project:
+    """The project, or the API104 answer every project route gives."""
     project = store.get_project(session, project_id)
     if project is None:
         raise ApiError("API104", 404, id=project_id)
@@ -89,14 +90,14 @@ def create_project(body: ProjectCreate, session: DbSession, response: Response) 
 
 @router.get("/{project_id}", response_model=ProjectOut, responses=_ERRORS, summary="One project")
 def get_project(project_id: int, session: DbSession) -> ProjectOut:
-    return ProjectOut.model_validate(_found(session, project_id))
+    return ProjectOut.model_validate(found_project(session, project_id))
 
 
 @router.patch(
     "/{project_id}", response_model=ProjectOut, responses=_ERRORS, summary="Rename or describe"
 )
 def update_project(project_id: int, body: ProjectUpdate, session: DbSession) -> ProjectOut:
-    project = _found(session, project_id)
+    project = found_project(session, project_id)
     try:
         store.update_project(session, project, body.name, body.description)
     except store.ProjectNameTakenError as exc:
@@ -111,5 +112,5 @@ def update_project(project_id: int, body: ProjectUpdate, session: DbSession) -> 
     summary="Delete a project",
 )
 def delete_project(project_id: int, session: DbSession) -> Response:
-    store.delete_project(session, _found(session, project_id))
+    store.delete_project(session, found_project(session, project_id))
     return Response(status_code=status.HTTP_204_NO_CONTENT)

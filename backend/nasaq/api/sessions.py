@@ -26,11 +26,14 @@ class Source(BaseModel):
     text: str = Field(max_length=MAX_SOURCE_CHARS)
 
 
-class SessionCreate(BaseModel):
-    sources: list[Source] = Field(min_length=1, max_length=500)
+class SessionOptions(BaseModel):
     profile: Literal["S7-300", "S7-400"] = "S7-300"
     cycle_ms: float = Field(default=10, ge=1, le=60_000)
     time_mode: TimeModeName = "virtual"
+
+
+class SessionCreate(SessionOptions):
+    sources: list[Source] = Field(min_length=1, max_length=500)
 
 
 class Download(BaseModel):
@@ -89,9 +92,16 @@ def _out(found: dict[str, Any]) -> SessionOut:
     summary="Compile and download a program into a new simulated CPU (in STOP)",
 )
 async def create_session(body: SessionCreate, request: Request) -> SessionOut:
+    return await start_session(request, _sources(body.sources), body)
+
+
+async def start_session(
+    request: Request, sources: list[tuple[str, str]], options: SessionOptions
+) -> SessionOut:
+    """Compiles ``sources`` into a new simulated CPU; also how a project starts a session."""
     try:
         found = await pool_of(request.app.state).create(
-            _sources(body.sources), body.profile, body.cycle_ms, body.time_mode
+            sources, options.profile, options.cycle_ms, options.time_mode
         )
     except MonitorError as error:
         raise _api_error(error) from None

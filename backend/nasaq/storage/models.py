@@ -5,7 +5,16 @@ from __future__ import annotations
 from datetime import UTC, datetime
 from typing import Any
 
-from sqlalchemy import DateTime, Dialect, MetaData, String, Text, TypeDecorator
+from sqlalchemy import (
+    DateTime,
+    Dialect,
+    ForeignKey,
+    MetaData,
+    String,
+    Text,
+    TypeDecorator,
+    UniqueConstraint,
+)
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
 
 # Named constraints keep migrations portable between SQLite and PostgreSQL.
@@ -54,3 +63,38 @@ class Project(Base):
     description: Mapped[str] = mapped_column(Text, default="")
     created_at: Mapped[datetime] = mapped_column(UtcDateTime, default=utc_now)
     updated_at: Mapped[datetime] = mapped_column(UtcDateTime, default=utc_now, onupdate=utc_now)
+
+
+class ProjectFile(Base):
+    """One source file of a project (``OB1.awl``, ``Motor.scl``, ``symbols.sdf``): what the
+    editor opens and autosaves, and what an export writes as a plain file. Blocks are not stored:
+    they are whatever the files compile to, as with STEP 7 sources.
+
+    ``version`` counts the saves (SQLAlchemy checks it on every UPDATE), so a save that started
+    from an older copy is detected even when two saves race.
+    """
+
+    __tablename__ = "project_files"
+    __table_args__ = (UniqueConstraint("project_id", "name"),)
+
+    id: Mapped[int] = mapped_column(primary_key=True)
+    # The database deletes a project's files with it, without loading their texts first.
+    project_id: Mapped[int] = mapped_column(ForeignKey("projects.id", ondelete="CASCADE"))
+    name: Mapped[str] = mapped_column(String(128))
+    text: Mapped[str] = mapped_column(Text, default="")
+    version: Mapped[int] = mapped_column()
+    created_at: Mapped[datetime] = mapped_column(UtcDateTime, default=utc_now)
+    updated_at: Mapped[datetime] = mapped_column(UtcDateTime, default=utc_now, onupdate=utc_now)
+
+    __mapper_args__ = {"version_id_col": version}  # noqa: RUF012 (read by SQLAlchemy once)
+
+
+class AppState(Base):
+    """Facts about this installation that outlive restarts and belong with its data (so every
+    server sharing one PostgreSQL database agrees): e.g. that the example projects were imported
+    once, which makes deleting them final."""
+
+    __tablename__ = "app_state"
+
+    key: Mapped[str] = mapped_column(String(64), primary_key=True)
+    value: Mapped[str] = mapped_column(Text, default="")

@@ -1,0 +1,108 @@
+"""What a project's files compile to: the blocks of the project tree and the diagnostics.
+
+The compiler takes every file at once (STL, SCL and symbol tables call and name each other), so
+the tree is the program it builds, not a list kept beside the files. Where a block is defined is
+found by its header line in its file (``FUNCTION_BLOCK "Motor"``, ``DATA_BLOCK DB 5``): the IR
+keeps the file of each block but only its instructions' lines, and DBs and UDTs have none.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from typing import Literal
+
+from pydantic import BaseModel, Field
+
+from nasaq.diagnostics import Diagnostic
+from nasaq.ir import Block, BlockKind
+from nasaq.lang.stl import SourceFile, compile_sources
+from nasaq.workbench.names import language_of
+
+KindName = Literal["OB", "FB", "FC", "DB", "UDT"]
+_KINDS: dict[BlockKind, KindName] = {
+    BlockKind.OB: "OB",
+    BlockKind.FB: "FB",
+    BlockKind.FC: "FC",
+    BlockKind.DB: "DB",
+    BlockKind.UDT: "UDT",
+}
+_ORDER = {kind: place for place, kind in enumerate(_KINDS.values())}
+
+_HEADER = re.compile(
+    r"^[ \t]*(?:ORGANIZATION_BLOCK|FUNCTION_BLOCK|FUNCTION|DATA_BLOCK|TYPE)[ \t]+"
+    r'("[^"\n]*"|\w+(?:[ \t]+\d+)?)',
+    re.MULTILINE | re.IGNORECASE,
+)
+_ABSOLUTE = re.compile(r"(OB|FB|FC|DB|UDT)(\d+)")
+
+
+class TreeBlock(BaseModel):
+    kind: KindName
+    number: int
+    name: str = Field(description="Symbolic name, empty when the block has none")
+    title: str
+    language: Literal["stl", "scl"]
+    file: str
+    line: int | None = Field(
+        description="Line of the block's header in its file; null for an instance DB the "
+        "compiler created for a CALL"
+    )
+    instance_of: str | None = Field(default=None, description="Instance DBs: 'FB 10'")
+
+
+class ProjectBuild(BaseModel):
+    blocks: list[TreeBlock]
+    diagnostics: list[Diagnostic]
+
+
+def _headers(text: str) -> dict[str, int]:
+    """Each block header's identity (``FB10``, or a casefolded symbol) -> its first line."""
+    found: dict[str, int] = {}
+    for match in _HEADER.finditer(text):
+        ident = match.group(1)
+        key = ident[1:-1].casefold() if ident.startswith('"') else ident.replace(" ", "").upper()
+        if _ABSOLUTE.fullmatch(key) is None and not ident.startswith('"'):
+            key = key.casefold()  # an SCL name written without quotes
+        found.setdefault(key, text.count("\n", 0, match.start()) + 1)
+    return found
+
+
+def _line(block: Block, headers: dict[str, int]) -> int | None:
+    for key in (f"{block.kind.value}{block.number}", block.name.casefold()):
+        if key and key in headers:
+            return headers[key]
+    origins = [item.origin for item in block.code if item.origin is not None]
+    return origins[0].line if origins else None
+
+
+def _tree(blocks: Iterable[Block], texts: dict[str, str]) -> list[TreeBlock]:
+    headers: dict[str, dict[str, int]] = {}
+    tree: list[TreeBlock] = []
+    for block in blocks:
+        language = language_of(block.file)
+        kind = _KINDS.get(block.kind)
+        if kind is None or block.file not in texts or language not in ("stl", "scl"):
+            continue  # the IEC library FCs the compiler adds: not the user's blocks
+        if block.file not in headers:
+            headers[block.file] = _headers(texts[block.file])
+        tree.append(
+            TreeBlock(
+                kind=kind,
+                number=block.number,
+                name=block.name,
+                title=block.title,
+                language=language,
+                file=block.file,
+                line=_line(block, headers[block.file]),
+                instance_of=block.attributes.get("instance_of"),
+            )
+        )
+    return sorted(tree, key=lambda item: (_ORDER[item.kind], item.number))
+
+
+def build(sources: list[tuple[str, str]]) -> ProjectBuild:
+    """Compiles the files together. Slow for big projects: call it in a thread."""
+    result = compile_sources(SourceFile(name, text) for name, text in sources)
+    blocks = _tree(result.program.blocks.values(), dict(sources))
+    return ProjectBuild(blocks=blocks, diagnostics=result.diagnostics)
