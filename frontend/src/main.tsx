@@ -8,6 +8,7 @@ import './styles/layout.css';
 import './styles/controls.css';
 import './styles/panes.css';
 import './styles/start.css';
+import './styles/code.css';
 
 const container = document.getElementById('root');
 if (!container) throw new Error('index.html has no #root element');

@@ -13,3 +13,19 @@ for (const code of ['en', 'fa', 'ar', 'vi'] as const) {
     expect(summary).toEqual([]);
   });
 }
+
+for (const code of ['en', 'fa', 'ar', 'vi'] as const) {
+  test(`no accessibility violations with an STL source open in ${code}`, async ({ page }) => {
+    await page.goto('/');
+    await chooseLanguage(page, code);
+    await page.getByTestId('new-source-stl').click();
+    const editor = page.getByTestId('code-editor');
+    await expect(editor).toHaveAttribute('data-state', 'ready', { timeout: 15_000 });
+    // With the caret in the text and the word suggestions open.
+    await editor.locator('.view-lines').click();
+    await page.keyboard.type('A');
+    const results = await new AxeBuilder({ page }).withTags(['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa']).analyze();
+    const summary = results.violations.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+    expect(summary).toEqual([]);
+  });
+}

@@ -8,11 +8,22 @@ import { test, expect } from './fixtures';
 
 const dist = path.resolve(__dirname, '../../frontend/dist');
 
-/** Strings that look like URLs but are never fetched: XML namespaces and error-text links. */
+/** Strings that look like URLs but are never fetched: XML namespaces, error texts, comments. Each is
+ * an exact URL, never a pattern that could let a real one through. */
 const NEVER_FETCHED = [
   /^http:\/\/www\.w3\.org\/(2000\/svg|1999\/xlink|1999\/xhtml|1998\/Math\/MathML|XML\/1998\/namespace|2000\/xmlns\/?)$/,
   /^https:\/\/react\.dev\/errors\/$/, // React's production error text
   /^https:\/\/react\.i18next\.com\/latest\/usetranslation-hook$/, // a react-i18next warning text
+  // Monaco 0.57.0 (the lazily loaded editor chunk). Each is text inside a message, a comment or
+  // a default setting that nothing in the standalone editor opens or fetches:
+  /^https:\/\/code\.visualstudio\.com\/docs\/editor\/codebasics#_find-and-replace$/, // "too many cursors" notification text (logged, not shown as a link)
+  /^https:\/\/code\.visualstudio\.com\/docs\/editor\/codebasics#_multicursor-modifier$/, // a setting's description; the standalone editor has no settings UI
+  /^https:\/\/github\.com\/microsoft\/monaco-editor#faq$/, // console warning when a web worker cannot start
+  /^https:\/\/github\.com\/microsoft\/vscode\/issues\/new$/, // VS Code's product defaults (reportIssueUrl): no UI in the standalone editor uses it
+  /^https:\/\/github\.com\/microsoft\/vscode\/blob\/main\/LICENSE\.txt$/, // the same product defaults (licenseUrl, serverLicenseUrl)
+  /^https:\/\/github\.com\/microsoft\/vscode\/issues\/103170$/, // a CSS comment inside a style sheet string
+  /^https:\/\/github\.com\/markedjs\/marked\.$/, // marked's error text ("Please report this to ...")
+  /^https:\/\/microsoft\.com$/, // Monaco's markdown renderer: stand-in target for an unfinished link while streaming chat text (fillInIncompleteTokens; hovers never set it)
 ];
 
 function filesUnder(folder: string): string[] {

@@ -4,7 +4,7 @@ import { useEditorTabs, type EditorTab } from './EditorTabsContext';
 
 export function useTabTitle(): (tab: EditorTab) => string {
   const { t } = useTranslation();
-  return (tab) => t(`editor.tabs.${tab.kind}`);
+  return (tab) => (tab.kind === 'source' ? tab.name : t(`editor.tabs.${tab.kind}`));
 }
 
 /** The row of open editors; each has its own close button. */
@@ -30,6 +30,12 @@ export function EditorTabStrip() {
               >
                 <DocumentIcon className="editor-tab__icon" />
                 <bdi>{title}</bdi>
+                {tab.kind === 'source' && tab.dirty ? (
+                  <span className="editor-tab__dirty" title={t('editor.unsaved')}>
+                    <span aria-hidden="true">●</span>
+                    <span className="visually-hidden">{t('editor.unsaved')}</span>
+                  </span>
+                ) : null}
               </button>
               <button
                 type="button"

@@ -2,7 +2,10 @@ import { useId } from 'react';
 import { useTranslation } from 'react-i18next';
 import { useUiLanguage } from '../i18n/useDocumentLanguage';
 import { ComingBadge } from '../ui/ComingBadge';
-import { CheckIcon, NasaqMark } from '../ui/icons';
+import { CheckIcon, DocumentIcon, NasaqMark } from '../ui/icons';
+import type { SourceLanguage } from './CodeEditor';
+import { useEditorTabs, type EditorTab } from './EditorTabsContext';
+import { SCL_EXAMPLE, STL_EXAMPLE } from './examples';
 
 const WORKS_NOW = ['projects', 'languages', 'rtl', 'offline'] as const;
 const COMING = ['stlScl', 'simulator', 'ladFbd', 'graph', 'lessons'] as const;
@@ -16,10 +19,24 @@ const STL_SAMPLE = `      A(
       AN    "Stop"         // I 0.1
       =     "Motor"`;
 
+const NEW_SOURCES: ReadonlyArray<{ language: SourceLanguage; extension: string; example: string }> = [
+  { language: 'stl', extension: 'awl', example: STL_EXAMPLE },
+  { language: 'scl', extension: 'scl', example: SCL_EXAMPLE },
+];
+
+/** `source1.awl`, or the first number no open tab uses yet. */
+function freeName(tabs: readonly EditorTab[], extension: string): string {
+  const taken = new Set(tabs.map((tab) => (tab.kind === 'source' ? tab.name.toLowerCase() : '')));
+  let number = 1;
+  while (taken.has(`source${number}.${extension}`)) number += 1;
+  return `source${number}.${extension}`;
+}
+
 /** The welcome page: what Nasaq is, what works today and what comes next. */
 export function StartPage() {
   const { t } = useTranslation();
   const { language, dir } = useUiLanguage();
+  const { tabs, openSource } = useEditorTabs();
   const titleId = useId();
 
   return (
@@ -31,6 +48,26 @@ export function StartPage() {
             {t('start.title')}
           </h1>
           <p className="start-page__lead">{t('start.lead')}</p>
+          <div className="start-page__actions" role="group" aria-label={t('start.newSource.label')}>
+            {NEW_SOURCES.map((source) => (
+              <button
+                key={source.language}
+                type="button"
+                className="button button--primary"
+                data-testid={`new-source-${source.language}`}
+                onClick={() =>
+                  openSource({
+                    name: freeName(tabs, source.extension),
+                    language: source.language,
+                    text: source.example,
+                  })
+                }
+              >
+                <DocumentIcon />
+                {t(`start.newSource.${source.language}`)}
+              </button>
+            ))}
+          </div>
         </div>
       </div>
 

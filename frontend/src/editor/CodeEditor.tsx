@@ -1,0 +1,216 @@
+import { useEffect, useRef, useState } from 'react';
+import { useTranslation } from 'react-i18next';
+import type { editor as MonacoEditor, IDisposable } from 'monaco-editor/editor/editor.api';
+import type { Severity } from '../api/types';
+import { useUiLanguage } from '../i18n/useDocumentLanguage';
+import { loadMonaco, type MonacoApi } from './monaco/load';
+import { THEME_NAME } from './monaco/constants';
+
+export type SourceLanguage = 'stl' | 'scl';
+
+/** A problem to show in the text: 1-based lines and columns, the end column exclusive. */
+export interface EditorMarker {
+  line: number;
+  column: number;
+  endLine: number;
+  endColumn: number;
+  severity: Severity;
+  /** The catalogue code (STL101, SIM502 ...), shown with the message. */
+  code: string;
+  message: string;
+}
+
+export interface CodeEditorProps {
+  value: string;
+  language: SourceLanguage;
+  onChange?: (value: string) => void;
+  markers?: readonly EditorMarker[];
+  readOnly?: boolean;
+  /** The name a screen reader announces for the text area. */
+  ariaLabel: string;
+  className?: string;
+  'data-testid'?: string;
+}
+
+/** The bundled JetBrains Mono (styles/fonts.css), Vazirmatn for Arabic/Persian comments. */
+const FONT_FAMILY = "'JetBrains Mono Variable', 'JetBrains Mono', 'Vazirmatn Variable', ui-monospace, monospace";
+const FONT_SIZE = 13;
+const NO_MARKERS: readonly EditorMarker[] = [];
+const MARKER_OWNER = 'nasaq';
+
+function severityOf(monaco: MonacoApi, severity: Severity): MonacoEditor.IMarkerData['severity'] {
+  switch (severity) {
+    case 'error':
+      return monaco.MarkerSeverity.Error;
+    case 'warning':
+      return monaco.MarkerSeverity.Warning;
+    default:
+      return monaco.MarkerSeverity.Info;
+  }
+}
+
+/** Waits (briefly) for the code font, so Monaco measures the glyphs it will draw. */
+async function codeFontReady(): Promise<void> {
+  const fonts = typeof document !== 'undefined' ? document.fonts : undefined;
+  if (!fonts) return;
+  const timeout = new Promise<void>((resolve) => setTimeout(resolve, 1500));
+  await Promise.race([fonts.load(`${FONT_SIZE}px 'JetBrains Mono Variable'`).then(() => undefined), timeout]).catch(
+    () => undefined,
+  );
+}
+
+type Status = 'loading' | 'ready' | 'failed';
+
+/**
+ * A Monaco editor for an STL or SCL source. Monaco itself is loaded on first use (see
+ * `monaco/load.ts`); until then a placeholder says so. The text always runs left to right,
+ * whatever the interface language.
+ */
+export function CodeEditor({
+  value,
+  language,
+  onChange,
+  markers = NO_MARKERS,
+  readOnly = false,
+  ariaLabel,
+  className,
+  'data-testid': testId,
+}: CodeEditorProps) {
+  const { t } = useTranslation();
+  const { dir: uiDir } = useUiLanguage();
+  const hostRef = useRef<HTMLDivElement>(null);
+  const monacoRef = useRef<MonacoApi | null>(null);
+  const editorRef = useRef<MonacoEditor.IStandaloneCodeEditor | null>(null);
+  const onChangeRef = useRef(onChange);
+  const applyingValue = useRef(false);
+  const [status, setStatus] = useState<Status>('loading');
+  const [attempt, setAttempt] = useState(0);
+
+  // The latest props, read when the editor is created (it is created once, asynchronously).
+  const initial = useRef({ value, language, readOnly, ariaLabel });
+  initial.current = { value, language, readOnly, ariaLabel };
+  useEffect(() => {
+    onChangeRef.current = onChange;
+  }, [onChange]);
+
+  useEffect(() => {
+    let cancelled = false;
+    const disposables: IDisposable[] = [];
+    setStatus('loading');
+    Promise.all([loadMonaco(), codeFontReady()])
+      .then(([monaco]) => {
+        const host = hostRef.current;
+        if (cancelled || !host) return;
+        const { value: text, language: lang, readOnly: ro, ariaLabel: label } = initial.current;
+        const model = monaco.editor.createModel(text, lang);
+        const editor = monaco.editor.create(host, {
+          model,
+          theme: THEME_NAME,
+          readOnly: ro,
+          ariaLabel: label,
+          automaticLayout: true,
+          fontFamily: FONT_FAMILY,
+          fontSize: FONT_SIZE,
+          fontLigatures: false,
+          lineHeight: 20,
+          minimap: { enabled: false },
+          scrollBeyondLastLine: false,
+          renderLineHighlight: 'all',
+          tabSize: 4,
+          insertSpaces: true,
+          wordBasedSuggestions: 'currentDocument',
+          fixedOverflowWidgets: true,
+          // The hidden textarea, not Chromium's EditContext: with EditContext, keys typed 30 ms
+          // apart lost characters in the browser tests (Chromium 156), and the textarea is the
+          // input path screen readers have long been tested with.
+          editContext: false,
+          // Arabic or Persian comments are normal here: do not flag their letters as look-alikes.
+          unicodeHighlight: { ambiguousCharacters: false, invisibleCharacters: true },
+        });
+        disposables.push(
+          model.onDidChangeContent(() => {
+            if (!applyingValue.current) onChangeRef.current?.(model.getValue());
+          }),
+          editor,
+          model,
+        );
+        monacoRef.current = monaco;
+        editorRef.current = editor;
+        // Fonts that arrive later (another script's subset) change glyph widths: measure again.
+        void document.fonts?.ready.then(() => {
+          if (!cancelled) monaco.editor.remeasureFonts();
+        });
+        setStatus('ready');
+      })
+      .catch(() => {
+        if (!cancelled) setStatus('failed');
+      });
+    return () => {
+      cancelled = true;
+      monacoRef.current = null;
+      editorRef.current = null;
+      // In order: the listener, the editor, then its model (never a model still in use).
+      for (const disposable of disposables) disposable.dispose();
+    };
+  }, [attempt]);
+
+  // The text from outside (a file loaded, a lesson reset): replace it as one undoable edit.
+  useEffect(() => {
+    const model = editorRef.current?.getModel();
+    if (status !== 'ready' || !model || model.getValue() === value) return;
+    applyingValue.current = true;
+    try {
+      model.pushEditOperations([], [{ range: model.getFullModelRange(), text: value }], () => null);
+    } finally {
+      applyingValue.current = false;
+    }
+  }, [status, value]);
+
+  useEffect(() => {
+    const model = editorRef.current?.getModel();
+    if (status === 'ready' && model && monacoRef.current) monacoRef.current.editor.setModelLanguage(model, language);
+  }, [status, language]);
+
+  useEffect(() => {
+    if (status === 'ready') editorRef.current?.updateOptions({ readOnly, ariaLabel });
+  }, [status, readOnly, ariaLabel]);
+
+  useEffect(() => {
+    const monaco = monacoRef.current;
+    const model = editorRef.current?.getModel();
+    if (status !== 'ready' || !monaco || !model) return;
+    monaco.editor.setModelMarkers(
+      model,
+      MARKER_OWNER,
+      markers.map((marker) => ({
+        startLineNumber: marker.line,
+        startColumn: marker.column,
+        endLineNumber: marker.endLine,
+        endColumn: marker.endColumn,
+        severity: severityOf(monaco, marker.severity),
+        code: marker.code,
+        message: marker.message,
+      })),
+    );
+  }, [status, markers]);
+
+  const classes = ['code-editor', className].filter(Boolean).join(' ');
+  return (
+    <div className={classes} dir="ltr" data-testid={testId} data-state={status}>
+      <div ref={hostRef} className="code-editor__host" />
+      {status === 'loading' ? (
+        <p className="code-editor__message" role="status" dir={uiDir}>
+          {t('editor.code.loading')}
+        </p>
+      ) : null}
+      {status === 'failed' ? (
+        <div className="code-editor__message" role="alert" dir={uiDir}>
+          <p>{t('editor.code.loadFailed')}</p>
+          <button type="button" className="button" onClick={() => setAttempt((n) => n + 1)}>
+            {t('common.retry')}
+          </button>
+        </div>
+      ) : null}
+    </div>
+  );
+}
