@@ -2,6 +2,7 @@ import { useCallback, useId, useState } from 'react';
 import { useTranslation } from 'react-i18next';
 import type { Project } from '../api/types';
 import { PlusIcon, RefreshIcon } from '../ui/icons';
+import { useActiveProject } from './ActiveProject';
 import { NewProjectDialog } from './NewProjectDialog';
 import { ProjectTreeBody } from './ProjectTreeBody';
 import { useProjects } from './useProjects';
@@ -13,7 +14,7 @@ export function ProjectTree() {
   const { state, reload, add } = useProjects();
   const [creating, setCreating] = useState(false);
   const [expanded, setExpanded] = useState<ReadonlySet<number>>(() => new Set());
-  const [selected, setSelected] = useState<number | null>(null);
+  const { projectId: selected, setProjectId: setSelected } = useActiveProject();
 
   const setOpen = useCallback((id: number, open: boolean) => {
     setExpanded((current) => {
@@ -32,7 +33,7 @@ export function ProjectTree() {
       setSelected(project.id);
       setCreating(false);
     },
-    [add, setOpen],
+    [add, setOpen, setSelected],
   );
 
   return (
