@@ -15,4 +15,6 @@ def _session(request: Request) -> Iterator[Session]:
         yield session
 
 
-DbSession = Annotated[Session, Depends(_session)]
+# "function" scope: the transaction commits before the response leaves, so a client that reads
+# right after its save (the editor's autosave, then a reload) always sees it.
+DbSession = Annotated[Session, Depends(_session, scope="function")]
