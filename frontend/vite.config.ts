@@ -9,7 +9,8 @@ export default defineConfig({
   plugins: [react()],
   server: {
     proxy: {
-      '/api': { target: apiServer, changeOrigin: false },
+      // The monitoring sockets live under /api/sessions/{id}/ws.
+      '/api': { target: apiServer, ws: true, changeOrigin: false },
       '/ws': { target: apiServer, ws: true, changeOrigin: false },
     },
   },

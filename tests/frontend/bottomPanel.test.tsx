@@ -28,11 +28,11 @@ function selectedTab() {
 }
 
 describe('bottom panel', () => {
-  it('is a tab list with Diagnostics, Watch table and Trend, Diagnostics first', () => {
+  it('is a tab list with Diagnostics, Watch table, Trend and I/O, Diagnostics first', () => {
     healthyServer();
     renderApp();
     expect(screen.getByRole('tablist', { name: 'Output panels' })).toBeTruthy();
-    expect(tabNames()).toEqual(['Diagnostics0Problems: 0', 'Watch table', 'Trend']);
+    expect(tabNames()).toEqual(['Diagnostics0Problems: 0', 'Watch table', 'Trend', 'I/O']);
     const tab = selectedTab()!;
     expect(tab.textContent).toContain('Diagnostics');
     const panel = document.getElementById(tab.getAttribute('aria-controls')!)!;
@@ -57,25 +57,27 @@ describe('bottom panel', () => {
   it('moves between tabs with the arrow keys, Home and End, with one tab stop', async () => {
     healthyServer();
     const { user } = renderApp();
-    const [diagnostics, watch, trend] = screen.getAllByRole('tab');
-    expect([diagnostics, watch, trend].map((tab) => tab!.tabIndex)).toEqual([0, -1, -1]);
+    const [diagnostics, watch, trend, io] = screen.getAllByRole('tab');
+    expect([diagnostics, watch, trend, io].map((tab) => tab!.tabIndex)).toEqual([0, -1, -1, -1]);
 
     diagnostics!.focus();
     await user.keyboard('{ArrowRight}');
     expect(document.activeElement).toBe(watch);
     expect(watch!.getAttribute('aria-selected')).toBe('true');
-    expect([diagnostics, watch, trend].map((tab) => tab!.tabIndex)).toEqual([-1, 0, -1]);
+    expect([diagnostics, watch, trend, io].map((tab) => tab!.tabIndex)).toEqual([-1, 0, -1, -1]);
     await user.keyboard('{ArrowRight}');
     expect(document.activeElement).toBe(trend);
+    await user.keyboard('{ArrowRight}');
+    expect(document.activeElement).toBe(io);
     await user.keyboard('{ArrowRight}');
     expect(document.activeElement).toBe(diagnostics);
     await user.keyboard('{ArrowLeft}');
-    expect(document.activeElement).toBe(trend);
-    expect(trend!.getAttribute('aria-selected')).toBe('true');
+    expect(document.activeElement).toBe(io);
+    expect(io!.getAttribute('aria-selected')).toBe('true');
     await user.keyboard('{Home}');
     expect(document.activeElement).toBe(diagnostics);
     await user.keyboard('{End}');
-    expect(document.activeElement).toBe(trend);
+    expect(document.activeElement).toBe(io);
   });
 
   it('mirrors the arrow keys in a right-to-left language', async () => {
@@ -90,23 +92,24 @@ describe('bottom panel', () => {
     expect(document.activeElement).toBe(diagnostics);
   });
 
-  it('has a real watch table with the five column headers and a "coming" row', async () => {
+  it('has a real watch table with the five column headers, an actions column and an empty row', async () => {
     healthyServer();
     const { user } = renderApp();
     await user.click(screen.getByRole('tab', { name: 'Watch table' }));
     const table = screen.getByTestId('watch-table');
     const headers = within(table).getAllByRole('columnheader').map((th) => th.textContent);
-    expect(headers).toEqual(['Address', 'Symbol', 'Display format', 'Monitor value', 'Modify value']);
+    expect(headers).toEqual(['Address', 'Symbol', 'Display format', 'Monitor value', 'Modify value', 'Actions']);
     const rows = within(table).getAllByRole('row');
     expect(rows).toHaveLength(2);
-    expect(rows[1]!.textContent).toContain('coming');
-    expect(rows[1]!.querySelector('td')!.colSpan).toBe(5);
+    expect(rows[1]!.textContent).toContain('add an address or a symbol');
+    expect(rows[1]!.querySelector('td')!.colSpan).toBe(6);
   });
 
-  it('marks the trend view as coming', () => {
+  it('asks for a download in the trend and I/O views while no session runs', () => {
     healthyServer();
     renderApp();
-    expect(screen.getByTestId('trend').textContent).toContain('coming');
+    expect(screen.getByTestId('trend').textContent).toContain('Download a program (Ctrl+B) to record trends.');
+    expect(screen.getByTestId('io-panel').textContent).toContain('Download a program (Ctrl+B)');
   });
 });
 

@@ -1,5 +1,6 @@
 import { screen, waitFor, within } from '@testing-library/react';
-import { describe, expect, it } from 'vitest';
+import { beforeEach, describe, expect, it } from 'vitest';
+import { projectContents } from '../../frontend/src/projects/projectContents';
 import {
   apiError,
   healthyServer,
@@ -11,6 +12,9 @@ import {
   requestsOf,
   serverDown,
 } from './helpers';
+import { block, projectServer } from './projectServer';
+
+beforeEach(() => projectContents.clear());
 
 function tree() {
   return screen.getByTestId('block-tree');
@@ -45,23 +49,42 @@ describe('project tree', () => {
     expect(within(tree()).getByRole('button', { name: 'Create the first project' })).toBeTruthy();
   });
 
-  it('expands a project to show its block folders, each marked as coming', async () => {
-    healthyServer([makeProject(1, 'Conveyor'), makeProject(2, 'Mixer')]);
+  it('expands a project to show its blocks by kind and its source files', async () => {
+    projectServer([
+      {
+        project: makeProject(1, 'Conveyor'),
+        files: new Map([
+          ['OB1.awl', { text: 'ORGANIZATION_BLOCK OB 1', version: 1 }],
+          ['Scale.scl', { text: 'FUNCTION "Scale" : REAL', version: 1 }],
+          ['symbols.sdf', { text: '"Main","OB 1","OB 1",""', version: 1 }],
+        ]),
+        blocks: [block('OB', 1, 'Main', 'OB1.awl'), block('FC', 10, 'Scale', 'Scale.scl')],
+        diagnostics: () => [],
+      },
+      { project: makeProject(2, 'Mixer'), files: new Map(), blocks: [], diagnostics: () => [] },
+    ]);
     const { user } = renderApp();
     const node = await within(tree()).findByRole('treeitem', { name: 'Conveyor' });
     await user.click(within(node).getByText('Conveyor'));
     expect(node.getAttribute('aria-expanded')).toBe('true');
+    await within(tree()).findByRole('treeitem', { name: 'OB1 Main' });
     const items = within(tree()).getAllByRole('treeitem');
     expect(items.map((item) => [item.textContent, item.getAttribute('aria-level')])).toEqual([
       ['Conveyor', '1'],
-      ['Program blocks coming', '2'],
-      ['PLC data types coming', '2'],
-      ['Symbol table coming', '2'],
+      ['Organization blocks (OB)1', '2'],
+      ['OB1 MainSTL', '3'],
+      ['Functions (FC)1', '2'],
+      ['FC10 ScaleSCL', '3'],
+      ['Sources3', '2'],
+      ['OB1.awl', '3'],
+      ['Scale.scl', '3'],
+      ['symbols.sdf', '3'],
       ['Mixer', '1'],
     ]);
-    expect(within(tree()).getByRole('treeitem', { name: 'Program blocks coming' }).title).toContain('later release');
-    expect(within(tree()).getByRole('treeitem', { name: 'PLC data types coming' })).toBeTruthy();
-    expect(within(tree()).getByRole('treeitem', { name: 'Symbol table coming' })).toBeTruthy();
+    // The counts are for the eye: the folder's name is its own text.
+    expect(within(tree()).getByRole('treeitem', { name: 'Sources' }).getAttribute('aria-expanded')).toBe('true');
+    expect(within(tree()).getByRole('treeitem', { name: 'OB1.awl' }).getAttribute('aria-posinset')).toBe('1');
+    expect(within(tree()).getByRole('treeitem', { name: 'OB1.awl' }).getAttribute('aria-setsize')).toBe('3');
 
     await user.click(within(node).getByText('Conveyor'));
     expect(node.getAttribute('aria-expanded')).toBe('false');
@@ -69,7 +92,15 @@ describe('project tree', () => {
   });
 
   it('moves through the tree with the arrow keys', async () => {
-    healthyServer([makeProject(1, 'Alpha'), makeProject(2, 'Beta')]);
+    projectServer([
+      {
+        project: makeProject(1, 'Alpha'),
+        files: new Map([['OB1.awl', { text: '', version: 1 }]]),
+        blocks: [],
+        diagnostics: () => [],
+      },
+      { project: makeProject(2, 'Beta'), files: new Map(), blocks: [], diagnostics: () => [] },
+    ]);
     const { user } = renderApp();
     const alpha = await within(tree()).findByRole('treeitem', { name: 'Alpha' });
     const beta = within(tree()).getByRole('treeitem', { name: 'Beta' });
@@ -84,8 +115,11 @@ describe('project tree', () => {
     expect(document.activeElement).toBe(alpha);
     await user.keyboard('{ArrowRight}');
     expect(alpha.getAttribute('aria-expanded')).toBe('true');
+    const sources = await within(tree()).findByRole('treeitem', { name: 'Sources' });
     await user.keyboard('{ArrowRight}');
-    expect(document.activeElement?.textContent).toContain('Program blocks');
+    expect(document.activeElement).toBe(sources);
+    await user.keyboard('{ArrowLeft}');
+    expect(sources.getAttribute('aria-expanded')).toBe('false');
     await user.keyboard('{ArrowLeft}');
     expect(document.activeElement).toBe(alpha);
     await user.keyboard('{ArrowLeft}');

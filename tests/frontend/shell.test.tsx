@@ -39,10 +39,15 @@ describe('page structure', () => {
 });
 
 describe('CPU toolbar', () => {
-  it('shows RUN, STOP and STEP disabled, named, and explained', () => {
+  it('shows Download, RUN, STOP and STEP named, disabled until a project and a session exist, and explained', () => {
     healthyServer();
     renderApp();
     const group = screen.getByRole('group', { name: 'CPU control' });
+    const download = screen.getByTestId('cpu-download') as HTMLButtonElement;
+    expect(group.contains(download)).toBe(true);
+    expect(download.disabled).toBe(true);
+    expect(download.getAttribute('aria-keyshortcuts')).toBe('Control+B');
+    expect(download.title).toContain('Select a project in the project tree first');
     for (const [id, name] of [
       ['cpu-run', 'RUN: start the CPU'],
       ['cpu-stop', 'STOP: stop the CPU'],
@@ -53,18 +58,16 @@ describe('CPU toolbar', () => {
       expect(button.disabled).toBe(true);
       expect(screen.getByRole('button', { name })).toBe(button);
       expect(button.textContent).toBe(name.split(':')[0]);
-      expect(button.title).toContain('later release');
       const reason = document.getElementById(button.getAttribute('aria-describedby')!);
-      expect(reason?.textContent).toContain('The CPU simulator arrives in a later release');
+      expect(reason?.textContent).toContain('Select a project in the project tree first');
     }
-    expect(within(group).getByText('coming')).toBeTruthy();
   });
 
-  it('shows the CPU state honestly: no simulator', () => {
+  it('shows the CPU state honestly: nothing downloaded', () => {
     healthyServer();
     renderApp();
-    expect(screen.getByTestId('cpu-state').textContent).toBe('No simulator');
-    expect(screen.getByTestId('cpu-status').textContent).toBe('CPU: no simulator yet');
+    expect(screen.getByTestId('cpu-state').textContent).toBe('No program downloaded');
+    expect(screen.getByTestId('cpu-status').textContent).toBe('CPU: No program downloaded');
     expect(screen.queryByText('RUN', { selector: '.cpu-state__text' })).toBeNull();
   });
 });

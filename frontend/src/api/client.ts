@@ -1,4 +1,16 @@
-import type { ApiProblem, ErrorLocation, Health, Project, ProjectCreate } from './types';
+import type {
+  ApiProblem,
+  ErrorLocation,
+  FileInfo,
+  FileOut,
+  FileSave,
+  Health,
+  ImportOut,
+  Project,
+  ProjectBuild,
+  ProjectCreate,
+  UnsavedFile,
+} from './types';
 
 /** Codes the client itself gives to failures that never reached an API answer. */
 export const CLIENT_ERROR_CODES = {
@@ -78,7 +90,7 @@ async function problemFrom(response: Response): Promise<ApiProblem> {
 async function request<T>(path: string, init: RequestInit = {}): Promise<T> {
   const headers = new Headers(init.headers);
   headers.set('Accept', 'application/json');
-  if (init.body !== undefined) headers.set('Content-Type', 'application/json');
+  if (init.body !== undefined && !headers.has('Content-Type')) headers.set('Content-Type', 'application/json');
 
   let response: Response;
   try {
@@ -96,6 +108,7 @@ async function request<T>(path: string, init: RequestInit = {}): Promise<T> {
   }
 
   if (!response.ok) throw new ApiError(await problemFrom(response), response.status);
+  if (response.status === 204) return undefined as T;
 
   try {
     return (await response.json()) as T;
@@ -124,5 +137,84 @@ export function createProject(input: ProjectCreate): Promise<Project> {
   return request<Project>('/api/projects', {
     method: 'POST',
     body: JSON.stringify({ name: input.name, description: input.description }),
+  });
+}
+
+export function deleteProject(projectId: number): Promise<void> {
+  return request<void>(`/api/projects/${projectId}`, { method: 'DELETE' });
+}
+
+/** `/api/projects/{id}/files/{name}`, the name escaped (names may hold spaces and any letters). */
+export function fileUrl(projectId: number, name: string): string {
+  return `/api/projects/${projectId}/files/${encodeURIComponent(name)}`;
+}
+
+export function listFiles(projectId: number, signal?: AbortSignal): Promise<FileInfo[]> {
+  return request<FileInfo[]>(`/api/projects/${projectId}/files`, { signal: signal ?? null });
+}
+
+export function getFile(projectId: number, name: string, signal?: AbortSignal): Promise<FileOut> {
+  return request<FileOut>(fileUrl(projectId, name), { signal: signal ?? null });
+}
+
+/**
+ * Creates or replaces a file (autosave). With `base_version` the server refuses a stale save
+ * with 409 (API111, `params.current_version`); without it the save is unconditional.
+ */
+export function saveFile(
+  projectId: number,
+  name: string,
+  body: FileSave,
+  options: { signal?: AbortSignal; keepalive?: boolean } = {},
+): Promise<FileInfo> {
+  return request<FileInfo>(fileUrl(projectId, name), {
+    method: 'PUT',
+    body: JSON.stringify({ text: body.text, base_version: body.base_version ?? null }),
+    signal: options.signal ?? null,
+    keepalive: options.keepalive ?? false,
+  });
+}
+
+export function renameFile(projectId: number, name: string, newName: string): Promise<FileInfo> {
+  return request<FileInfo>(fileUrl(projectId, name), { method: 'PATCH', body: JSON.stringify({ name: newName }) });
+}
+
+export function duplicateFile(projectId: number, name: string, newName: string): Promise<FileInfo> {
+  return request<FileInfo>(`${fileUrl(projectId, name)}/duplicate`, {
+    method: 'POST',
+    body: JSON.stringify({ name: newName }),
+  });
+}
+
+export function deleteFile(projectId: number, name: string): Promise<void> {
+  return request<void>(fileUrl(projectId, name), { method: 'DELETE' });
+}
+
+/** The blocks the project's saved files define, and the compiler's diagnostics. */
+export function getBlocks(projectId: number, signal?: AbortSignal): Promise<ProjectBuild> {
+  return request<ProjectBuild>(`/api/projects/${projectId}/blocks`, { signal: signal ?? null });
+}
+
+/** Compiles the project with one unsaved editor text in place of its stored file. */
+export function checkSource(projectId: number, unsaved: UnsavedFile, signal?: AbortSignal): Promise<ProjectBuild> {
+  return request<ProjectBuild>(`/api/projects/${projectId}/check`, {
+    method: 'POST',
+    body: JSON.stringify({ name: unsaved.name, text: unsaved.text }),
+    signal: signal ?? null,
+  });
+}
+
+/** Where the browser downloads the project as a zip of its sources. */
+export function exportUrl(projectId: number): string {
+  return `/api/projects/${projectId}/export.zip`;
+}
+
+/** Creates a project from a zip of sources; without a name the zip's one top folder names it. */
+export function importProject(zip: Blob, name?: string): Promise<ImportOut> {
+  const query = name ? `?name=${encodeURIComponent(name)}` : '';
+  return request<ImportOut>(`/api/projects/import${query}`, {
+    method: 'POST',
+    body: zip,
+    headers: { 'Content-Type': 'application/zip' },
   });
 }

@@ -77,3 +77,76 @@ export interface Diagnostic {
   params: Record<string, unknown>;
   span: Span | null;
 }
+
+/** What a project file holds, by its suffix: STL, SCL or a symbol table. */
+export type FileLanguage = 'stl' | 'scl' | 'symbols';
+
+/** One source file of a project (`GET /api/projects/{id}/files`). */
+export interface FileInfo {
+  name: string;
+  language: FileLanguage;
+  /** Length of the text in characters. */
+  size: number;
+  /** Counts the saves; sent back as `base_version` when saving. */
+  version: number;
+  /** ISO 8601 timestamp */
+  created_at: string;
+  /** ISO 8601 timestamp */
+  updated_at: string;
+}
+
+/** One file with its text (`GET /api/projects/{id}/files/{name}`). */
+export interface FileOut extends FileInfo {
+  text: string;
+}
+
+/** Body of `PUT /api/projects/{id}/files/{name}` (autosave). */
+export interface FileSave {
+  text: string;
+  /** The version the editor loaded; a stale one is refused with 409 (API111). */
+  base_version?: number | null;
+}
+
+/** Body of `PATCH .../files/{name}` (rename) and `POST .../files/{name}/duplicate`. */
+export interface FileName {
+  name: string;
+}
+
+export type BlockKind = 'OB' | 'FB' | 'FC' | 'DB' | 'UDT';
+
+/** A block the project's files define (`GET /api/projects/{id}/blocks`). */
+export interface TreeBlock {
+  kind: BlockKind;
+  number: number;
+  /** Symbolic name, empty when the block has none. */
+  name: string;
+  title: string;
+  language: 'stl' | 'scl';
+  /** The file that defines the block. */
+  file: string;
+  /** Line of the block's header in its file; null for an instance DB the compiler created. */
+  line: number | null;
+  /** Instance DBs: `FB 10`. */
+  instance_of?: string | null;
+}
+
+/** What a project's files compile to: the block tree and the compiler's diagnostics. */
+export interface ProjectBuild {
+  blocks: TreeBlock[];
+  diagnostics: Diagnostic[];
+}
+
+/** Body of `POST /api/projects/{id}/check`: one editor text in place of its stored file. */
+export interface UnsavedFile {
+  name: string;
+  text: string;
+}
+
+/** Answer of `POST /api/projects/import`. */
+export interface ImportOut {
+  project: Project;
+  /** The source files imported, by name. */
+  files: string[];
+  /** Entries that are not sources (README, scenarios...). */
+  skipped: string[];
+}

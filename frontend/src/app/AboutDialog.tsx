@@ -3,9 +3,10 @@ import { useEditorTabs } from '../editor/EditorTabsContext';
 import { useServerHealth } from '../health/ServerHealth';
 import { Dialog } from '../ui/Dialog';
 import { NasaqMark } from '../ui/icons';
+import { SHORTCUTS } from '../ui/shortcuts';
 
-const HERE = ['projects', 'languages', 'panels'] as const;
-const COMING = ['editors', 'simulator', 'lessons'] as const;
+const HERE = ['projects', 'languages', 'panels', 'simulator'] as const;
+const COMING = ['editors', 'lessons'] as const;
 
 /** Help → About: the server's version and a short "what's here / what's coming". */
 export function AboutDialog({ onClose }: { onClose: () => void }) {
@@ -77,6 +78,19 @@ export function AboutDialog({ onClose }: { onClose: () => void }) {
             </ul>
           </section>
         </div>
+        <section>
+          <h3 className="about__heading">{t('about.shortcutsTitle')}</h3>
+          <dl className="about__shortcuts" data-testid="about-shortcuts">
+            {SHORTCUTS.map((shortcut) => (
+              <div key={shortcut.keys} className="about__shortcut">
+                <dt>
+                  <kbd dir="ltr">{shortcut.keys}</kbd>
+                </dt>
+                <dd>{t(shortcut.labelKey)}</dd>
+              </div>
+            ))}
+          </dl>
+        </section>
       </div>
     </Dialog>
   );

@@ -1,4 +1,5 @@
 import { useTranslation } from 'react-i18next';
+import { CpuStatus } from '../cpu/CpuStatus';
 import { useServerHealth } from '../health/ServerHealth';
 import { nativeNameOf } from '../i18n/languages';
 import { useUiLanguage } from '../i18n/useDocumentLanguage';
@@ -32,9 +33,7 @@ export function StatusBar() {
       <span className="status-item" data-testid="ui-language-status">
         {t('status.language')} <span lang={language}>{nativeNameOf(language)}</span>
       </span>
-      <span className="status-item status-item--cpu" data-testid="cpu-status">
-        {t('status.cpu')}
-      </span>
+      <CpuStatus />
     </footer>
   );
 }

@@ -3,6 +3,7 @@ import { EditorArea } from '../editor/EditorArea';
 import { useDocumentLanguage } from '../i18n/useDocumentLanguage';
 import { LessonPane } from '../lessons/LessonPane';
 import { BottomPanel } from '../panels/BottomPanel';
+import { SessionProvider } from '../cpu/SessionContext';
 import { ActiveProjectProvider } from '../projects/ActiveProject';
 import { ProjectTree } from '../projects/ProjectTree';
 import { usePersistentFlag } from '../ui/usePersistentState';
@@ -28,22 +29,24 @@ export function Workbench() {
 
   return (
     <ActiveProjectProvider>
-      <div className={lessonsOpen ? 'workbench workbench--lessons' : 'workbench'}>
-        <TopBar
-          lessonPaneOpen={lessonsOpen}
-          onToggleLessonPane={() => setLessonsOpen(!lessonsOpen)}
-          lessonToggleRef={lessonToggle}
-        />
-        <div className="workbench__body">
-          <ProjectTree />
-          <main className="workbench__main">
-            <EditorArea />
-            <BottomPanel />
-          </main>
-          {lessonsOpen ? <LessonPane onClose={closeLessons} /> : null}
+      <SessionProvider>
+        <div className={lessonsOpen ? 'workbench workbench--lessons' : 'workbench'}>
+          <TopBar
+            lessonPaneOpen={lessonsOpen}
+            onToggleLessonPane={() => setLessonsOpen(!lessonsOpen)}
+            lessonToggleRef={lessonToggle}
+          />
+          <div className="workbench__body">
+            <ProjectTree />
+            <main className="workbench__main">
+              <EditorArea />
+              <BottomPanel />
+            </main>
+            {lessonsOpen ? <LessonPane onClose={closeLessons} /> : null}
+          </div>
+          <StatusBar />
         </div>
-        <StatusBar />
-      </div>
+      </SessionProvider>
     </ActiveProjectProvider>
   );
 }

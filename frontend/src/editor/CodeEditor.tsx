@@ -6,7 +6,16 @@ import { useUiLanguage } from '../i18n/useDocumentLanguage';
 import { loadMonaco, type MonacoApi } from './monaco/load';
 import { THEME_NAME } from './monaco/constants';
 
-export type SourceLanguage = 'stl' | 'scl';
+export type SourceLanguage = 'stl' | 'scl' | 'symbols';
+
+/** Monaco's language of each source language: symbol tables are plain CSV-like text. */
+const MODEL_LANGUAGE: Record<SourceLanguage, string> = { stl: 'stl', scl: 'scl', symbols: 'plaintext' };
+
+/** A place the editor should show (see `RevealRequest` of the tabs): a new object each time. */
+export interface EditorReveal {
+  line: number;
+  column: number;
+}
 
 /** A problem to show in the text: 1-based lines and columns, the end column exclusive. */
 export interface EditorMarker {
@@ -28,6 +37,16 @@ export interface CodeEditorProps {
   readOnly?: boolean;
   /** The name a screen reader announces for the text area. */
   ariaLabel: string;
+  /** The text area lost the focus (the autosave saves then). */
+  onBlur?: () => void;
+  /** Scrolls to this place and puts the caret there whenever a new object is given. */
+  reveal?: EditorReveal | null;
+  /**
+   * F12 or Ctrl+click (Cmd+click) on a word: the line's text and the 1-based column. The
+   * context menu offers it as `definitionLabel`.
+   */
+  onGoToDefinition?: (lineText: string, column: number) => void;
+  definitionLabel?: string;
   className?: string;
   'data-testid'?: string;
 }
@@ -73,6 +92,10 @@ export function CodeEditor({
   markers = NO_MARKERS,
   readOnly = false,
   ariaLabel,
+  onBlur,
+  reveal = null,
+  onGoToDefinition,
+  definitionLabel,
   className,
   'data-testid': testId,
 }: CodeEditorProps) {
@@ -82,6 +105,8 @@ export function CodeEditor({
   const monacoRef = useRef<MonacoApi | null>(null);
   const editorRef = useRef<MonacoEditor.IStandaloneCodeEditor | null>(null);
   const onChangeRef = useRef(onChange);
+  const onBlurRef = useRef(onBlur);
+  const definitionRef = useRef(onGoToDefinition);
   const applyingValue = useRef(false);
   const [status, setStatus] = useState<Status>('loading');
   const [attempt, setAttempt] = useState(0);
@@ -91,7 +116,9 @@ export function CodeEditor({
   initial.current = { value, language, readOnly, ariaLabel };
   useEffect(() => {
     onChangeRef.current = onChange;
-  }, [onChange]);
+    onBlurRef.current = onBlur;
+    definitionRef.current = onGoToDefinition;
+  }, [onChange, onBlur, onGoToDefinition]);
 
   useEffect(() => {
     let cancelled = false;
@@ -102,7 +129,7 @@ export function CodeEditor({
         const host = hostRef.current;
         if (cancelled || !host) return;
         const { value: text, language: lang, readOnly: ro, ariaLabel: label } = initial.current;
-        const model = monaco.editor.createModel(text, lang);
+        const model = monaco.editor.createModel(text, MODEL_LANGUAGE[lang]);
         const editor = monaco.editor.create(host, {
           model,
           theme: THEME_NAME,
@@ -168,7 +195,7 @@ export function CodeEditor({
 
   useEffect(() => {
     const model = editorRef.current?.getModel();
-    if (status === 'ready' && model && monacoRef.current) monacoRef.current.editor.setModelLanguage(model, language);
+    if (status === 'ready' && model && monacoRef.current) monacoRef.current.editor.setModelLanguage(model, MODEL_LANGUAGE[language]);
   }, [status, language]);
 
   useEffect(() => {
@@ -193,6 +220,56 @@ export function CodeEditor({
       })),
     );
   }, [status, markers]);
+
+  const hasBlur = onBlur !== undefined;
+  useEffect(() => {
+    const editor = editorRef.current;
+    if (status !== 'ready' || !editor || !hasBlur) return;
+    const subscription = editor.onDidBlurEditorText(() => onBlurRef.current?.());
+    return () => subscription.dispose();
+  }, [status, hasBlur]);
+
+  // Go to definition: F12 and the context menu, and Ctrl+click (Cmd+click) on a word.
+  const hasDefinition = onGoToDefinition !== undefined;
+  useEffect(() => {
+    const monaco = monacoRef.current;
+    const editor = editorRef.current;
+    if (status !== 'ready' || !monaco || !editor || !hasDefinition) return;
+    const goTo = (lineNumber: number, column: number) => {
+      const text = editor.getModel()?.getLineContent(lineNumber);
+      if (text !== undefined) definitionRef.current?.(text, column);
+    };
+    const action = editor.addAction({
+      id: 'nasaq.goToDefinition',
+      label: definitionLabel ?? 'Go to definition',
+      keybindings: [monaco.KeyCode.F12],
+      contextMenuGroupId: 'navigation',
+      contextMenuOrder: 1,
+      run: (ed) => {
+        const position = ed.getPosition();
+        if (position) goTo(position.lineNumber, position.column);
+      },
+    });
+    const click = editor.onMouseDown((event) => {
+      const position = event.target.position;
+      if (!position || !(event.event.ctrlKey || event.event.metaKey) || event.event.leftButton === false) return;
+      goTo(position.lineNumber, position.column);
+    });
+    return () => {
+      click.dispose();
+      action.dispose();
+    };
+  }, [status, hasDefinition, definitionLabel]);
+
+  useEffect(() => {
+    const editor = editorRef.current;
+    if (status !== 'ready' || !editor || !reveal) return;
+    // The tab may have come to the front in this very render: measure before scrolling.
+    editor.layout();
+    editor.setPosition({ lineNumber: reveal.line, column: reveal.column });
+    editor.revealLineInCenter(reveal.line);
+    editor.focus();
+  }, [status, reveal]);
 
   const classes = ['code-editor', className].filter(Boolean).join(' ');
   return (

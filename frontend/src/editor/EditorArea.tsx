@@ -1,27 +1,40 @@
+import { useEffect, useRef } from 'react';
 import { useTranslation } from 'react-i18next';
-import { CodeEditor } from './CodeEditor';
+import { flushAll } from './autosave';
 import { EditorEmptyState } from './EditorEmptyState';
 import { EditorTabStrip } from './EditorTabStrip';
-import { useEditorTabs, type SourceTab } from './EditorTabsContext';
+import { useEditorTabs, type EditorTab, type SourceTab } from './EditorTabsContext';
+import { SourceView } from './SourceView';
 import { StartPage } from './StartPage';
 
-const LANGUAGE_NAMES = { stl: 'STL', scl: 'SCL' } as const;
-
-function SourceView({ tab, active }: { tab: SourceTab; active: boolean }) {
-  const { t } = useTranslation();
-  const { updateSource } = useEditorTabs();
-  return (
-    <div className="source-view" hidden={!active} data-testid={`source-view-${tab.id}`}>
-      <CodeEditor
-        value={tab.text}
-        language={tab.language}
-        markers={tab.markers}
-        onChange={(text) => updateSource(tab.id, text)}
-        ariaLabel={t('editor.code.label', { language: LANGUAGE_NAMES[tab.language], name: tab.name })}
-        data-testid="code-editor"
-      />
-    </div>
-  );
+/**
+ * Saves every file tab when the page is hidden or closed (requests that outlive the page), and
+ * asks before leaving while a text could not be saved.
+ */
+function useSaveOnLeave(tabs: readonly EditorTab[]) {
+  const tabsRef = useRef(tabs);
+  tabsRef.current = tabs;
+  useEffect(() => {
+    const save = () => void flushAll({ keepalive: true });
+    const onVisibility = () => {
+      if (document.visibilityState === 'hidden') save();
+    };
+    const onBeforeUnload = (event: BeforeUnloadEvent) => {
+      save();
+      const unsaved = tabsRef.current.some(
+        (tab) => tab.kind === 'source' && !!tab.file && (tab.save.status === 'conflict' || tab.save.status === 'failed'),
+      );
+      if (unsaved) event.preventDefault();
+    };
+    window.addEventListener('pagehide', save);
+    window.addEventListener('beforeunload', onBeforeUnload);
+    document.addEventListener('visibilitychange', onVisibility);
+    return () => {
+      window.removeEventListener('pagehide', save);
+      window.removeEventListener('beforeunload', onBeforeUnload);
+      document.removeEventListener('visibilitychange', onVisibility);
+    };
+  }, []);
 }
 
 /**
@@ -35,6 +48,7 @@ export function EditorArea() {
   const { tabs, activeId } = useEditorTabs();
   const active = tabs.find((tab) => tab.id === activeId) ?? null;
   const sources = tabs.filter((tab): tab is SourceTab => tab.kind === 'source');
+  useSaveOnLeave(tabs);
 
   return (
     <section className="editor-area" dir="ltr" aria-label={t('editor.areaLabel')} data-testid="editor-area">

@@ -1,5 +1,5 @@
 import { useTranslation } from 'react-i18next';
-import { CloseIcon, DocumentIcon } from '../ui/icons';
+import { CloseIcon, DocumentIcon, WarningIcon } from '../ui/icons';
 import { useEditorTabs, type EditorTab } from './EditorTabsContext';
 
 export function useTabTitle(): (tab: EditorTab) => string {
@@ -26,11 +26,20 @@ export function EditorTabStrip() {
                 className="editor-tab__button"
                 aria-current={active ? 'true' : undefined}
                 data-testid={`editor-tab-${tab.id}`}
+                data-save-state={tab.kind === 'source' && tab.file ? tab.save.status : undefined}
                 onClick={() => activate(tab.id)}
               >
                 <DocumentIcon className="editor-tab__icon" />
                 <bdi>{title}</bdi>
-                {tab.kind === 'source' && tab.dirty ? (
+                {tab.kind === 'source' && (tab.save.status === 'conflict' || tab.save.status === 'failed') ? (
+                  <span
+                    className={`editor-tab__state editor-tab__state--${tab.save.status}`}
+                    title={t(`editor.save.${tab.save.status}`)}
+                  >
+                    <WarningIcon size={12} />
+                    <span className="visually-hidden">{t(`editor.save.${tab.save.status}`)}</span>
+                  </span>
+                ) : tab.kind === 'source' && tab.dirty ? (
                   <span className="editor-tab__dirty" title={t('editor.unsaved')}>
                     <span aria-hidden="true">●</span>
                     <span className="visually-hidden">{t('editor.unsaved')}</span>

@@ -1,5 +1,7 @@
 import { createContext, useCallback, useContext, useMemo, useRef, useState, type ReactNode } from 'react';
+import type { ApiError } from '../api/client';
 import type { EditorMarker, SourceLanguage } from './CodeEditor';
+import { languageOfFile } from './fileLanguage';
 
 /** What an editor tab shows. LAD/FBD and Graph editors join this list later. */
 export type EditorTabKind = 'start' | 'source';
@@ -15,7 +17,28 @@ export interface SourceFileRef {
   path: string;
 }
 
-/** An STL or SCL text in a Monaco editor. */
+/**
+ * Where a file tab's text stands against the server: saved, changed and waiting for the
+ * autosave, being saved, refused because the file changed elsewhere (409, API111), or not
+ * saved because of another error (kept, and tried again).
+ */
+export type SaveStatus = 'saved' | 'dirty' | 'saving' | 'conflict' | 'failed';
+
+export interface SaveState {
+  status: SaveStatus;
+  /** The server's answer when the status is `conflict` or `failed`. */
+  error: ApiError | null;
+}
+
+/** A place in the text to show: the editor scrolls there and puts the caret there. */
+export interface RevealRequest {
+  line: number;
+  column: number;
+  /** Grows with every request, so the same place can be asked for twice. */
+  seq: number;
+}
+
+/** An STL or SCL text (or a symbol table) in a Monaco editor. */
 export interface SourceTab {
   id: string;
   kind: 'source';
@@ -28,6 +51,10 @@ export interface SourceTab {
   file: SourceFileRef | null;
   /** The compiler's problems in this text, shown as markers in the editor. */
   markers: readonly EditorMarker[];
+  /** The file's version on the server that `text` derives from (null: no file, or unknown). */
+  version: number | null;
+  save: SaveState;
+  reveal: RevealRequest | null;
 }
 
 export type EditorTab = StartTab | SourceTab;
@@ -39,6 +66,10 @@ export interface NewSource {
   file?: SourceFileRef | null;
   /** A new text that exists nowhere else starts dirty; a text just read from a file does not. */
   dirty?: boolean;
+  /** The file's version on the server, for the autosave's version check. */
+  version?: number | null;
+  /** A line to show once the tab is open (a block's header, a diagnostic). */
+  at?: { line: number; column?: number } | null;
 }
 
 interface EditorTabsValue {
@@ -52,10 +83,23 @@ interface EditorTabsValue {
   openSource: (source: NewSource) => string;
   /** The text of a source tab changed in its editor: it becomes dirty. */
   updateSource: (id: string, text: string) => void;
-  /** The text of a source tab was saved (as `file`, when given). */
-  markSaved: (id: string, file?: SourceFileRef) => void;
+  /**
+   * The text of a source tab was saved (as `file`, when given). With `saved`, the tab stays
+   * dirty if its text changed while it was being saved.
+   */
+  markSaved: (id: string, file?: SourceFileRef, saved?: { version: number; text: string }) => void;
   /** The problems the compiler found in a source tab's text. */
   setMarkers: (id: string, markers: readonly EditorMarker[]) => void;
+  /** The autosave's state of a file tab. */
+  setSaveState: (id: string, save: SaveState) => void;
+  /** Replaces a tab's text with the server's (after a conflict): saved, at `version`. */
+  replaceText: (id: string, text: string, version: number) => void;
+  /** Brings a tab to the front and shows `line` (and `column`) in its editor. */
+  reveal: (id: string, at: { line: number; column?: number }) => void;
+  /** A file was renamed on the server: its tabs follow. */
+  renameFileTabs: (projectId: number, from: string, to: string) => void;
+  /** A file (or, without `path`, every file of a project) was deleted: its tabs close. */
+  closeFileTabs: (projectId: number, path?: string) => void;
 }
 
 const START_TAB: StartTab = { id: 'start', kind: 'start' };
@@ -96,22 +140,37 @@ export function EditorTabsProvider({ children }: { children: ReactNode }) {
     setActiveId(START_TAB.id);
   }, []);
 
+  const revealSeq = useRef(0);
+  const revealAt = (at: { line: number; column?: number }): RevealRequest => ({
+    line: Math.max(1, at.line),
+    column: Math.max(1, at.column ?? 1),
+    seq: ++revealSeq.current,
+  });
+
   const openSource = useCallback((source: NewSource) => {
     const existing = tabsRef.current.find((tab) => tab.kind === 'source' && sameFile(tab.file, source.file));
     if (existing) {
+      if (source.at) {
+        const reveal = revealAt(source.at);
+        setTabs((current) => current.map((tab) => (tab.id === existing.id ? { ...tab, reveal } : tab)));
+      }
       setActiveId(existing.id);
       return existing.id;
     }
     const id = `source-${nextId.current++}`;
+    const dirty = source.dirty ?? !source.file;
     const tab: SourceTab = {
       id,
       kind: 'source',
       name: source.name,
       language: source.language,
       text: source.text,
-      dirty: source.dirty ?? !source.file,
+      dirty,
       file: source.file ?? null,
       markers: [],
+      version: source.version ?? null,
+      save: { status: dirty ? 'dirty' : 'saved', error: null },
+      reveal: source.at ? revealAt(source.at) : null,
     };
     setTabs((current) => [...current, tab]);
     setActiveId(id);
@@ -124,12 +183,70 @@ export function EditorTabsProvider({ children }: { children: ReactNode }) {
     );
   }, []);
 
-  const markSaved = useCallback((id: string, file?: SourceFileRef) => {
+  const markSaved = useCallback((id: string, file?: SourceFileRef, saved?: { version: number; text: string }) => {
     setTabs((current) =>
       current.map((tab) =>
-        tab.kind === 'source' && tab.id === id ? { ...tab, dirty: false, file: file ?? tab.file } : tab,
+        tab.kind === 'source' && tab.id === id
+          ? {
+              ...tab,
+              dirty: saved ? tab.text !== saved.text : false,
+              file: file ?? tab.file,
+              version: saved ? saved.version : tab.version,
+            }
+          : tab,
       ),
     );
+  }, []);
+
+  const setSaveState = useCallback((id: string, save: SaveState) => {
+    setTabs((current) =>
+      current.map((tab) =>
+        tab.kind === 'source' && tab.id === id && (tab.save.status !== save.status || tab.save.error !== save.error)
+          ? { ...tab, save }
+          : tab,
+      ),
+    );
+  }, []);
+
+  const replaceText = useCallback((id: string, text: string, version: number) => {
+    setTabs((current) =>
+      current.map((tab) =>
+        tab.kind === 'source' && tab.id === id
+          ? { ...tab, text, version, dirty: false, save: { status: 'saved', error: null } }
+          : tab,
+      ),
+    );
+  }, []);
+
+  const reveal = useCallback((id: string, at: { line: number; column?: number }) => {
+    const request = revealAt(at);
+    setTabs((current) => current.map((tab) => (tab.kind === 'source' && tab.id === id ? { ...tab, reveal: request } : tab)));
+    setActiveId(id);
+  }, []);
+
+  const renameFileTabs = useCallback((projectId: number, from: string, to: string) => {
+    setTabs((current) =>
+      current.map((tab) =>
+        tab.kind === 'source' && sameFile(tab.file, { projectId, path: from })
+          ? { ...tab, name: to, file: { projectId, path: to }, language: languageOfFile(to) ?? tab.language }
+          : tab,
+      ),
+    );
+  }, []);
+
+  const closeFileTabs = useCallback((projectId: number, path?: string) => {
+    const gone = (tab: EditorTab) =>
+      tab.kind === 'source' && !!tab.file && tab.file.projectId === projectId && (path === undefined || tab.file.path === path);
+    const current = tabsRef.current;
+    if (!current.some(gone)) return;
+    const remaining = current.filter((tab) => !gone(tab));
+    setTabs(remaining);
+    setActiveId((active) => {
+      if (active === null || remaining.some((tab) => tab.id === active)) return active;
+      const index = current.findIndex((tab) => tab.id === active);
+      const before = current.slice(0, index).filter((tab) => !gone(tab));
+      return (before.at(-1) ?? remaining[0])?.id ?? null;
+    });
   }, []);
 
   const setMarkers = useCallback((id: string, markers: readonly EditorMarker[]) => {
@@ -137,8 +254,38 @@ export function EditorTabsProvider({ children }: { children: ReactNode }) {
   }, []);
 
   const value = useMemo(
-    () => ({ tabs, activeId, activate, close, openStart, openSource, updateSource, markSaved, setMarkers }),
-    [tabs, activeId, activate, close, openStart, openSource, updateSource, markSaved, setMarkers],
+    () => ({
+      tabs,
+      activeId,
+      activate,
+      close,
+      openStart,
+      openSource,
+      updateSource,
+      markSaved,
+      setMarkers,
+      setSaveState,
+      replaceText,
+      reveal,
+      renameFileTabs,
+      closeFileTabs,
+    }),
+    [
+      tabs,
+      activeId,
+      activate,
+      close,
+      openStart,
+      openSource,
+      updateSource,
+      markSaved,
+      setMarkers,
+      setSaveState,
+      replaceText,
+      reveal,
+      renameFileTabs,
+      closeFileTabs,
+    ],
   );
   return <EditorTabsContext.Provider value={value}>{children}</EditorTabsContext.Provider>;
 }

@@ -2,18 +2,21 @@ import { useState } from 'react';
 import { useTranslation } from 'react-i18next';
 import { Tabs, type TabDefinition } from '../ui/Tabs';
 import { EyeIcon, ListIcon, TrendIcon } from '../ui/icons';
-import { DiagnosticsList } from './DiagnosticsList';
-import { useDiagnostics } from './diagnosticsStore';
+import { IoIcon } from '../cpu/cpuIcons';
+import { WorkbenchDiagnostics, useProblemCount } from './DiagnosticsList';
+import { IoPanel } from './IoPanel';
 import { TrendView } from './TrendView';
 import { WatchTable } from './WatchTable';
 
-type PanelId = 'diagnostics' | 'watch' | 'trend';
+import '../styles/monitor.css';
 
-/** The panel under the editor: diagnostics, the watch table and the trend view. */
+type PanelId = 'diagnostics' | 'watch' | 'trend' | 'io';
+
+/** The panel under the editor: diagnostics, the watch table, the trend view and the I/O panel. */
 export function BottomPanel() {
   const { t } = useTranslation();
   const [selected, setSelected] = useState<PanelId>('diagnostics');
-  const problemCount = useDiagnostics().length;
+  const problemCount = useProblemCount();
 
   const tabs: TabDefinition<PanelId>[] = [
     {
@@ -29,10 +32,11 @@ export function BottomPanel() {
           <span className="visually-hidden">{t('panels.problemCount', { count: problemCount })}</span>
         </>
       ),
-      panel: <DiagnosticsList />,
+      panel: <WorkbenchDiagnostics />,
     },
     { id: 'watch', testId: 'panel-tab-watch', icon: <EyeIcon />, label: t('panels.watch'), panel: <WatchTable /> },
     { id: 'trend', testId: 'panel-tab-trend', icon: <TrendIcon />, label: t('panels.trend'), panel: <TrendView /> },
+    { id: 'io', testId: 'panel-tab-io', icon: <IoIcon />, label: t('panels.io'), panel: <IoPanel /> },
   ];
 
   return (

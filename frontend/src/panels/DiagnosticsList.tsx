@@ -1,7 +1,13 @@
+import { useMemo } from 'react';
 import { useTranslation } from 'react-i18next';
 import type { Diagnostic, Severity, Span } from '../api/types';
+import { useOpenDiagnostic, useProjectDiagnostics } from '../editor/projectDiagnostics';
 import { CheckIcon, ErrorIcon, InfoIcon, WarningIcon } from '../ui/icons';
+import { CpuDiagnostics } from './CpuDiagnostics';
 import { diagnosticsStore, useDiagnostics, type DiagnosticsStore } from './diagnosticsStore';
+
+type OpenDiagnostic = (diagnostic: Diagnostic) => boolean;
+const NONE: readonly Diagnostic[] = [];
 
 const SEVERITY_ICON = { error: ErrorIcon, warning: WarningIcon, info: InfoIcon } as const;
 const SEVERITY_ORDER: Record<Severity, number> = { error: 0, warning: 1, info: 2 };
@@ -27,7 +33,7 @@ export function spanText(span: Span | null): string {
   return parts.filter((part) => part !== '').join(':');
 }
 
-function DiagnosticRow({ diagnostic }: { diagnostic: Diagnostic }) {
+function DiagnosticRow({ diagnostic, onOpen }: { diagnostic: Diagnostic; onOpen?: OpenDiagnostic }) {
   const { t, i18n } = useTranslation();
   const Icon = SEVERITY_ICON[diagnostic.severity];
   const translated = `problems.${diagnostic.key}`;
@@ -39,19 +45,45 @@ function DiagnosticRow({ diagnostic }: { diagnostic: Diagnostic }) {
       <span className="visually-hidden">{t(`diagnostics.severity.${diagnostic.severity}`)}</span>
       <code className="diagnostic__code">{diagnostic.code}</code>
       <span className="diagnostic__message">{message}</span>
-      {where && (
+      {where && onOpen && diagnostic.span?.file ? (
+        <button
+          type="button"
+          className="diagnostic__location diagnostic__jump"
+          dir="ltr"
+          data-testid="diagnostic-open"
+          title={t('diagnostics.goTo', { place: where })}
+          aria-label={t('diagnostics.goTo', { place: where })}
+          onClick={() => onOpen(diagnostic)}
+        >
+          <code>{where}</code>
+        </button>
+      ) : where ? (
         <code className="diagnostic__location" dir="ltr">
           {where}
         </code>
-      )}
+      ) : null}
     </li>
   );
 }
 
-/** The Diagnostics panel: every reported problem, errors first; "No problems" when there are none. */
-export function DiagnosticsList({ store = diagnosticsStore }: { store?: DiagnosticsStore }) {
+/**
+ * The Diagnostics panel: every reported problem, errors first ("No problems" when there are none),
+ * then the diagnostic buffer of the simulated CPU while a session runs.
+ */
+export function DiagnosticsList({
+  store = diagnosticsStore,
+  project = NONE,
+  onOpen,
+}: {
+  store?: DiagnosticsStore;
+  /** The compiler's diagnostics of the active project (editor/projectDiagnostics). */
+  project?: readonly Diagnostic[];
+  /** Opens a diagnostic's file at its line. */
+  onOpen?: OpenDiagnostic;
+}) {
   const { t } = useTranslation();
-  const diagnostics = useDiagnostics(store);
+  const reported = useDiagnostics(store);
+  const diagnostics = useMemo(() => (project.length === 0 ? reported : [...reported, ...project]), [reported, project]);
 
   return (
     <div className="diagnostics" data-testid="diagnostics">
@@ -66,10 +98,27 @@ export function DiagnosticsList({ store = diagnosticsStore }: { store?: Diagnost
             <DiagnosticRow
               key={`${diagnostic.code}-${spanText(diagnostic.span)}-${index}`}
               diagnostic={diagnostic}
+              onOpen={onOpen}
             />
           ))}
         </ul>
       )}
+      <CpuDiagnostics />
     </div>
   );
+}
+
+/** The compiler's diagnostics of the active project and the reported ones, one count. */
+export function useProblemCount(store: DiagnosticsStore = diagnosticsStore): number {
+  return useDiagnostics(store).length + useProjectDiagnostics().length;
+}
+
+/**
+ * The Diagnostics panel of the workbench: the reported problems and the compiler's diagnostics
+ * of the active project, each opening its file at its line, and the CPU's diagnostic buffer.
+ */
+export function WorkbenchDiagnostics() {
+  const project = useProjectDiagnostics();
+  const open = useOpenDiagnostic();
+  return <DiagnosticsList project={project} onOpen={open} />;
 }

@@ -12,7 +12,7 @@ export const PROJECT_DESCRIPTION_MAX = 2000;
 
 type Field = 'name' | 'description' | 'form';
 
-interface ShownError {
+export interface ShownError {
   field: Field;
   code: string | null;
   text: string;
@@ -27,7 +27,7 @@ function fieldOf(error: ApiError): Field {
   return 'form';
 }
 
-function FieldError({ id, error, testId }: { id: string; error: ShownError; testId: string }) {
+export function FieldError({ id, error, testId }: { id: string; error: ShownError; testId: string }) {
   return (
     <p id={id} className="field__error" role="alert" data-testid={testId}>
       <ErrorIcon className="field__error-icon" />

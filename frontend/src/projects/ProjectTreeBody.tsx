@@ -1,77 +1,112 @@
-import { useMemo } from 'react';
+import { useCallback, useId, useMemo, useState, type KeyboardEvent } from 'react';
 import { useTranslation } from 'react-i18next';
 import { useApiErrorText } from '../i18n/useApiErrorText';
 import { PlusIcon, RefreshIcon, WarningIcon } from '../ui/icons';
-import { BLOCK_FOLDERS, folderKey, projectKey } from './blockFolders';
-import { ProjectNode } from './ProjectNode';
+import { RowMenu, type MenuAction } from './RowMenu';
+import { TreeItem } from './TreeItem';
+import type { TreeRow } from './treeRows';
 import type { ProjectsState } from './useProjects';
 import { useTreeKeyboard } from './useTreeKeyboard';
 
+export interface TreeRowActions {
+  /** Click: select the row (and open or close a project or folder). */
+  select: (row: TreeRow) => void;
+  /** Open or close a project or folder. */
+  setOpen: (row: TreeRow, open: boolean) => void;
+  /** Enter: open a block or file, open or close the rest. */
+  activate: (row: TreeRow) => void;
+  /** Double-click: open a block or file. */
+  open: (row: TreeRow) => void;
+  rename: (row: TreeRow) => void;
+  remove: (row: TreeRow) => void;
+  menuFor: (row: TreeRow) => MenuAction[];
+}
+
 interface ProjectTreeBodyProps {
   state: ProjectsState;
+  rows: readonly TreeRow[];
   labelledBy: string;
-  expanded: ReadonlySet<number>;
-  selected: number | null;
-  onOpenChange: (id: number, open: boolean) => void;
-  onSelect: (id: number) => void;
+  selected: string | null;
+  actions: TreeRowActions;
   onRetry: () => void;
   onCreate: () => void;
 }
 
-function projectIdOf(key: string): number | null {
-  const match = /^project:(\d+)$/.exec(key);
-  return match ? Number(match[1]) : null;
+function expandable(row: TreeRow): boolean | null {
+  if (row.type === 'project') return row.expanded;
+  if (row.type === 'folder') return row.expanded;
+  return null;
 }
 
 /** What the tree pane shows: loading, the server error, the empty state or the tree itself. */
-export function ProjectTreeBody({
-  state,
-  labelledBy,
-  expanded,
-  selected,
-  onOpenChange,
-  onSelect,
-  onRetry,
-  onCreate,
-}: ProjectTreeBodyProps) {
+export function ProjectTreeBody({ state, rows, labelledBy, selected, actions, onRetry, onCreate }: ProjectTreeBodyProps) {
   const { t } = useTranslation();
   const errorText = useApiErrorText();
-  const projects = state.status === 'ready' ? state.projects : [];
+  const hintId = useId();
+  const [menu, setMenu] = useState<{ row: TreeRow; anchor: HTMLElement } | null>(null);
 
-  const visibleKeys = useMemo(
-    () =>
-      projects.flatMap((project) => [
-        projectKey(project.id),
-        ...(expanded.has(project.id) ? BLOCK_FOLDERS.map((folder) => folderKey(project.id, folder.id)) : []),
-      ]),
-    [projects, expanded],
-  );
+  const byKey = useMemo(() => new Map(rows.map((row) => [row.key, row])), [rows]);
+  const visibleKeys = useMemo(() => rows.map((row) => row.key), [rows]);
 
-  const actions = useMemo(
+  const keyboardActions = useMemo(
     () => ({
       expand: (key: string) => {
-        const id = projectIdOf(key);
-        if (id === null || expanded.has(id)) return false;
-        onOpenChange(id, true);
+        const row = byKey.get(key);
+        if (!row || expandable(row) !== false) return false;
+        actions.setOpen(row, true);
         return true;
       },
       collapse: (key: string) => {
-        const id = projectIdOf(key);
-        if (id === null || !expanded.has(id)) return false;
-        onOpenChange(id, false);
+        const row = byKey.get(key);
+        if (!row || expandable(row) !== true) return false;
+        actions.setOpen(row, false);
         return true;
       },
       activate: (key: string) => {
-        const id = projectIdOf(key);
-        if (id === null) return;
-        onSelect(id);
-        onOpenChange(id, !expanded.has(id));
+        const row = byKey.get(key);
+        if (row) actions.activate(row);
       },
     }),
-    [expanded, onOpenChange, onSelect],
+    [byKey, actions],
   );
 
-  const keyboard = useTreeKeyboard(visibleKeys, actions);
+  const keyboard = useTreeKeyboard(visibleKeys, keyboardActions);
+
+  const openMenu = useCallback(
+    (row: TreeRow, anchor: HTMLElement) => {
+      if (actions.menuFor(row).length > 0) setMenu({ row, anchor });
+    },
+    [actions],
+  );
+
+  /** Shift+F10 or the context-menu key: the actions; F2 renames, Delete deletes. */
+  const onKeyDown = (event: KeyboardEvent<HTMLElement>) => {
+    const item = (event.target as HTMLElement).closest<HTMLElement>('[role="treeitem"]');
+    const row = item ? byKey.get(item.dataset.treeKey ?? '') : undefined;
+    if (item && row) {
+      const handled = (() => {
+        if (event.key === 'ContextMenu' || (event.key === 'F10' && event.shiftKey)) {
+          openMenu(row, item);
+          return true;
+        }
+        if (event.key === 'F2' && row.type === 'file') {
+          actions.rename(row);
+          return true;
+        }
+        if (event.key === 'Delete' && (row.type === 'file' || row.type === 'project')) {
+          actions.remove(row);
+          return true;
+        }
+        return false;
+      })();
+      if (handled) {
+        event.preventDefault();
+        event.stopPropagation();
+        return;
+      }
+    }
+    keyboard.onKeyDown(event);
+  };
 
   if (state.status === 'loading') {
     return (
@@ -100,7 +135,7 @@ export function ProjectTreeBody({
     );
   }
 
-  if (projects.length === 0) {
+  if (state.projects.length === 0) {
     return (
       <div className="pane-message" data-testid="project-tree-empty">
         <strong>{t('projects.emptyTitle')}</strong>
@@ -113,27 +148,47 @@ export function ProjectTreeBody({
     );
   }
 
+  const menuLabel = menu ? t('projects.actions.menuLabel') : '';
   return (
-    <ul
-      role="tree"
-      aria-labelledby={labelledBy}
-      className="tree"
-      onKeyDown={keyboard.onKeyDown}
-      onFocus={keyboard.onFocus}
-    >
-      {projects.map((project, index) => (
-        <ProjectNode
-          key={project.id}
-          project={project}
-          position={index + 1}
-          count={projects.length}
-          expanded={expanded.has(project.id)}
-          selected={selected === project.id}
-          tabStop={keyboard.tabStop}
-          onToggle={() => onOpenChange(project.id, !expanded.has(project.id))}
-          onSelect={() => onSelect(project.id)}
+    <>
+      <ul
+        role="tree"
+        aria-labelledby={labelledBy}
+        aria-describedby={hintId}
+        className="tree"
+        onKeyDown={onKeyDown}
+        onFocus={keyboard.onFocus}
+      >
+        {rows.map((row) => (
+          <TreeItem
+            key={row.key}
+            row={row}
+            selected={selected === row.key}
+            tabStop={keyboard.tabStop}
+            menuOpen={menu?.row.key === row.key}
+            hasActions={actions.menuFor(row).length > 0}
+            onClick={actions.select}
+            onDoubleClick={actions.open}
+            onMenu={openMenu}
+          />
+        ))}
+      </ul>
+      <p id={hintId} className="visually-hidden">
+        {t('projects.keysHint')}
+      </p>
+      {menu ? (
+        <RowMenu
+          anchor={menu.anchor}
+          label={menuLabel}
+          actions={actions.menuFor(menu.row)}
+          testId="tree-menu"
+          onClose={(restoreFocus) => {
+            const anchor = menu.anchor;
+            setMenu(null);
+            if (restoreFocus && anchor.isConnected) anchor.focus();
+          }}
         />
-      ))}
-    </ul>
+      ) : null}
+    </>
   );
 }

@@ -43,5 +43,11 @@ export function useProjects() {
     });
   }, []);
 
-  return { state, reload, add };
+  const remove = useCallback((id: number) => {
+    setState((current) =>
+      current.status === 'ready' ? { status: 'ready', projects: current.projects.filter((p) => p.id !== id) } : current,
+    );
+  }, []);
+
+  return { state, reload, add, remove };
 }

@@ -48,6 +48,7 @@ import 'monaco-editor/editor/contrib/wordOperations/browser/wordOperations';
 import 'monaco-editor/editor/contrib/wordPartOperations/browser/wordPartOperations';
 
 import { SCL_LANGUAGE_ID, sclConfiguration, sclFoldingRanges, sclLanguage } from '../languages/scl';
+import { formatStl } from '../languages/stlFormat';
 import { STL_LANGUAGE_ID, stlConfiguration, stlFoldingRanges, stlLanguage, type LineRange } from '../languages/stl';
 import { THEME_NAME } from './constants';
 import { nasaqLightTheme } from './theme';
@@ -68,6 +69,14 @@ function register(
 }
 
 register(STL_LANGUAGE_ID, ['.awl', '.stl'], stlLanguage, stlConfiguration, stlFoldingRanges);
+// "Format Document" (Shift+Alt+F, the context menu): STEP 7's column layout for STL.
+monaco.languages.registerDocumentFormattingEditProvider(STL_LANGUAGE_ID, {
+  provideDocumentFormattingEdits: (model) => {
+    const text = model.getValue();
+    const formatted = formatStl(text);
+    return formatted === text ? [] : [{ range: model.getFullModelRange(), text: formatted }];
+  },
+});
 register(SCL_LANGUAGE_ID, ['.scl'], sclLanguage, sclConfiguration, sclFoldingRanges);
 monaco.editor.defineTheme(THEME_NAME, nasaqLightTheme);
 

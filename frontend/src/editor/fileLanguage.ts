@@ -1,0 +1,14 @@
+import type { SourceLanguage } from './CodeEditor';
+
+/** What a project file holds, by its suffix, as the compiler decides (`workbench/names.py`). */
+export function languageOfFile(name: string): SourceLanguage | null {
+  const dot = name.lastIndexOf('.');
+  const suffix = dot >= 0 ? name.slice(dot).toLowerCase() : '';
+  if (suffix === '.awl' || suffix === '.stl') return 'stl';
+  if (suffix === '.scl') return 'scl';
+  if (['.sdf', '.asc', '.seq', '.csv'].includes(suffix)) return 'symbols';
+  return null;
+}
+
+/** The suffix a new source of the language gets. */
+export const SOURCE_SUFFIX = { stl: 'awl', scl: 'scl' } as const;

@@ -1,0 +1,42 @@
+import { useCallback } from 'react';
+import { getFile } from '../api/client';
+import { useEditorTabs } from './EditorTabsContext';
+import { languageOfFile } from './fileLanguage';
+
+export type OpenProjectFile = (
+  projectId: number,
+  name: string,
+  at?: { line: number; column?: number } | null,
+) => Promise<void>;
+
+/**
+ * Opens a project file in a source tab, or brings its tab to the front; with `at`, the editor
+ * shows that line. A file not yet open is read from the server (the promise rejects with the
+ * ApiError when it cannot be).
+ */
+export function useOpenProjectFile(): OpenProjectFile {
+  const { tabs, openSource, reveal, activate } = useEditorTabs();
+  return useCallback(
+    async (projectId, name, at = null) => {
+      const open = tabs.find(
+        (tab) => tab.kind === 'source' && tab.file?.projectId === projectId && tab.file.path === name,
+      );
+      if (open) {
+        if (at) reveal(open.id, at);
+        else activate(open.id);
+        return;
+      }
+      const file = await getFile(projectId, name);
+      openSource({
+        name: file.name,
+        language: languageOfFile(file.name) ?? (file.language === 'scl' ? 'scl' : file.language === 'stl' ? 'stl' : 'symbols'),
+        text: file.text,
+        file: { projectId, path: file.name },
+        version: file.version,
+        dirty: false,
+        at,
+      });
+    },
+    [tabs, openSource, reveal, activate],
+  );
+}
