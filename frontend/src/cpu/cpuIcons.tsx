@@ -1,28 +1,5 @@
 /** Icons of the CPU panel and the monitoring panels, drawn like ui/icons (16×16, currentColor). */
-import type { ReactNode, SVGProps } from 'react';
-
-type IconProps = Omit<SVGProps<SVGSVGElement>, 'children'> & { size?: number };
-
-function Icon({ size = 16, className, children, ...rest }: IconProps & { children: ReactNode }) {
-  return (
-    <svg
-      width={size}
-      height={size}
-      viewBox="0 0 16 16"
-      fill="none"
-      stroke="currentColor"
-      strokeWidth={1.4}
-      strokeLinecap="round"
-      strokeLinejoin="round"
-      aria-hidden="true"
-      focusable="false"
-      className={className ? `icon ${className}` : 'icon'}
-      {...rest}
-    >
-      {children}
-    </svg>
-  );
-}
+import { Icon, type IconProps } from '../ui/icons';
 
 /** Download into the CPU: an arrow into a module. */
 export function DownloadIcon(props: IconProps) {

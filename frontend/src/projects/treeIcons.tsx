@@ -1,25 +1,5 @@
 /** Icons of the project tree's actions, in the style of `ui/icons.tsx` (16×16, currentColor, decorative). */
-import type { ReactNode } from 'react';
-
-function Glyph({ size = 16, className, children }: { size?: number; className?: string; children: ReactNode }) {
-  return (
-    <svg
-      width={size}
-      height={size}
-      viewBox="0 0 16 16"
-      fill="none"
-      stroke="currentColor"
-      strokeWidth={1.4}
-      strokeLinecap="round"
-      strokeLinejoin="round"
-      aria-hidden="true"
-      focusable="false"
-      className={className ? `icon ${className}` : 'icon'}
-    >
-      {children}
-    </svg>
-  );
-}
+import { Icon as Glyph } from '../ui/icons';
 
 /** Three dots: the row's actions. */
 export function MoreIcon(props: { size?: number; className?: string }) {

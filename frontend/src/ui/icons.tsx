@@ -4,9 +4,10 @@
  */
 import type { ReactNode, SVGProps } from 'react';
 
-type IconProps = Omit<SVGProps<SVGSVGElement>, 'children'> & { size?: number };
+export type IconProps = Omit<SVGProps<SVGSVGElement>, 'children'> & { size?: number };
 
-function Icon({ size = 16, className, children, ...rest }: IconProps & { children: ReactNode }) {
+/** The frame every icon is drawn in; other modules' icons use it too. */
+export function Icon({ size = 16, className, children, ...rest }: IconProps & { children: ReactNode }) {
   return (
     <svg
       width={size}
