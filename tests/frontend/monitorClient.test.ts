@@ -57,7 +57,7 @@ describe('mergeFrame', () => {
   });
 
   it('appends trend samples and diagnostic entries, and ends a hold on released', () => {
-    const entry: DiagnosticEntry = { time_ms: 10, code: 'SIM501', message: 'watchdog', block: 'OB1', network: 1, line: 3 };
+    const entry: DiagnosticEntry = { time_ms: 10, code: 'SIM501', message: 'watchdog', block: 'OB1', network: 1, line: 3, key: '', params: {} };
     const hold = {
       reason: 'step' as const,
       breakpoint: null,
@@ -78,7 +78,7 @@ describe('mergeFrame', () => {
   });
 
   it('merges the diagnostic history with what frames brought meanwhile, each entry once', () => {
-    const a: DiagnosticEntry = { time_ms: 1, code: 'SIM527', message: 'a', block: null, network: null, line: null };
+    const a: DiagnosticEntry = { time_ms: 1, code: 'SIM527', message: 'a', block: null, network: null, line: null, key: '', params: {} };
     const b: DiagnosticEntry = { ...a, time_ms: 2, message: 'b' };
     expect(mergeDiagnosticHistory([a], [a, b])).toEqual([a, b]);
   });
@@ -229,7 +229,7 @@ describe('MonitorClient', () => {
   });
 
   it('loads the diagnostic history after connecting', async () => {
-    const entry: DiagnosticEntry = { time_ms: 5, code: 'SIM527', message: 'stop in hold', block: 'OB1', network: null, line: 2 };
+    const entry: DiagnosticEntry = { time_ms: 5, code: 'SIM527', message: 'stop in hold', block: 'OB1', network: null, line: 2, key: '', params: {} };
     const client = makeClient({ loadDiagnostics: async () => [entry] });
     last().open();
     last().receive(hello());

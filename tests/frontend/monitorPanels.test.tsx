@@ -428,7 +428,9 @@ describe('CPU diagnostic buffer', () => {
   it('lists the entries of the frames, newest first, with block, network and line', async () => {
     server({
       'GET /api/sessions/s1/diagnostics': () =>
-        json([{ time_ms: 10, code: 'SIM527', message: 'Stopped in a hold', block: null, network: null, line: null }]),
+        json([
+          { time_ms: 10, code: 'SIM527', message: 'Stopped in a hold', block: null, network: null, line: null, key: '', params: {} },
+        ]),
     });
     const { user } = renderMonitor();
     await downloadAndConnect(user, cpuState({ mode: 'RUN' }));
@@ -437,7 +439,18 @@ describe('CPU diagnostic buffer', () => {
       socket().receive(
         frame({
           seq: 2,
-          diagnostics: [{ time_ms: 1500, code: 'SIM501', message: 'Cycle time exceeded', block: 'OB1', network: 2, line: 7 }],
+          diagnostics: [
+            {
+              time_ms: 1500,
+              code: 'SIM501',
+              message: 'Cycle time exceeded the watchdog of 150 ms.',
+              block: 'OB1',
+              network: 2,
+              line: 7,
+              key: 'sim_watchdog',
+              params: { limit_ms: 150 },
+            },
+          ],
         }),
       ),
     );
@@ -446,6 +459,37 @@ describe('CPU diagnostic buffer', () => {
     expect(entries[0]!.textContent).toContain('SIM501');
     expect(entries[0]!.textContent).toContain('OB1 NW 2 L 7 · 1.500 s');
     expect(entries[1]!.textContent).toContain('SIM527');
+    // Without a key the server's English text shows; with one, the catalogue's text.
+    expect(entries[1]!.textContent).toContain('Stopped in a hold');
+  });
+
+  it('says each entry in the interface language from its key and params', async () => {
+    server();
+    const { user } = renderMonitor({ language: 'fa' });
+    await downloadAndConnect(user, cpuState({ mode: 'RUN' }));
+    act(() =>
+      socket().receive(
+        frame({
+          seq: 2,
+          diagnostics: [
+            {
+              time_ms: 20,
+              code: 'SIM503',
+              message: 'Area length error reading MW 6.',
+              block: 'OB1',
+              network: 1,
+              line: 3,
+              key: 'sim_area_length_read',
+              params: { address: 'MW 6' },
+            },
+          ],
+        }),
+      ),
+    );
+    const entry = await screen.findByTestId('cpu-diagnostic');
+    const persian = createI18n('fa').t('problems.sim_area_length_read', { address: 'MW 6' });
+    expect(persian).not.toContain('Area length');
+    expect(entry.textContent).toContain(persian);
   });
 });
 

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import logging
 import traceback
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import TracebackType
 from typing import Any
 
@@ -37,6 +37,7 @@ from nasaq.cpu.machine import Machine
 from nasaq.cpu.memory import Memory
 from nasaq.cpu.profile import Profile
 from nasaq.cpu.timers import Timers
+from nasaq.diagnostics import render
 from nasaq.ir import BlockKind, Program
 
 log = logging.getLogger(__name__)
@@ -62,10 +63,12 @@ _START_INFO = {  # OB number: (event class, priority)
 class DiagnosticEntry:
     time_ms: int
     code: str
-    message: str
+    message: str  # English; ``key`` and ``params`` let a client say it in its own language
     block: str | None
     network: int | None
     line: int | None
+    key: str = ""
+    params: dict[str, str | int | float | bool | None] = field(default_factory=dict)
 
 
 class Engine:
@@ -293,8 +296,15 @@ class Engine:
 
     def _diagnose(self, error: CpuError) -> None:
         block, network, line = error.where or (None, None, None)
+        found = render(error.code, None, **error.params)
+        params = {
+            name: value if value is None or isinstance(value, str | int | float) else str(value)
+            for name, value in error.params.items()
+        }
         self.diagnostic_buffer.append(
-            DiagnosticEntry(self.m.now, error.code, error.message, block, network, line)
+            DiagnosticEntry(
+                self.m.now, error.code, found.message, block, network, line, found.key, params
+            )
         )
         self.diagnostic_count += 1
         del self.diagnostic_buffer[:-1000]

@@ -326,10 +326,12 @@ class HoldState(BaseModel):
 class DiagnosticEntry(BaseModel):
     time_ms: int
     code: str
-    message: str
+    message: str = Field(description="English; the UI says `key` with `params` in its language")
     block: str | None
     network: int | None
     line: int | None
+    key: str = ""
+    params: dict[str, str | int | float | bool | None] = {}
 
     @classmethod
     def of(cls, entry: object) -> DiagnosticEntry:

@@ -267,10 +267,13 @@ export interface HoldState {
 export interface DiagnosticEntry {
   time_ms: number;
   code: string;
+  /** English; the UI says `key` with `params` in its language */
   message: string;
   block: string | null;
   network: number | null;
   line: number | null;
+  key: string;
+  params: Record<string, string | number | boolean | null>;
 }
 
 /** Wall-clock milliseconds the scans took (the program's work, not the cycle wait). */

@@ -1,6 +1,8 @@
 import { useTranslation } from 'react-i18next';
 import type { CpuState } from '../api/monitor';
 import { formatMs, formatSimTime, type CpuMode } from './cpuState';
+import { useMonitor } from './SessionContext';
+import { useProblemText } from './useProblemText';
 
 /** The scan counter, the simulated clock and the scan-time statistic of a running session. */
 export function CpuDetails({ cpu, testIds = false }: { cpu: CpuState; testIds?: boolean }) {
@@ -38,7 +40,14 @@ export function CpuDetails({ cpu, testIds = false }: { cpu: CpuState; testIds?: 
  */
 export function CpuStateIndicator({ mode, cpu }: { mode: CpuMode; cpu?: CpuState | null }) {
   const { t } = useTranslation();
-  const stopped = mode === 'stop' && cpu?.stop_reason ? `${cpu.stop_code ?? ''} ${cpu.stop_reason}`.trim() : undefined;
+  const problemText = useProblemText();
+  // The stop's diagnostic entry says it in the interface language; the English reason otherwise.
+  const stopCode = mode === 'stop' ? (cpu?.stop_code ?? null) : null;
+  const stopEntry = useMonitor((state) =>
+    stopCode === null ? undefined : state.diagnostics.findLast((entry) => entry.code === stopCode),
+  );
+  const reason = stopEntry ? problemText(stopEntry) : cpu?.stop_reason;
+  const stopped = mode === 'stop' && reason ? `${cpu?.stop_code ?? ''} ${reason}`.trim() : undefined;
   return (
     <span className={`cpu-state cpu-state--${mode}`} data-testid="cpu-state" data-mode={mode} title={stopped}>
       <span className="led" aria-hidden="true" />

@@ -2,6 +2,7 @@ import { useTranslation } from 'react-i18next';
 import type { DiagnosticEntry } from '../api/monitor';
 import { formatSimTime } from '../cpu/cpuState';
 import { useMonitor, useSession } from '../cpu/SessionContext';
+import { useProblemText } from '../cpu/useProblemText';
 import { ErrorIcon } from '../ui/icons';
 
 /** `OB1 NW 2 line 7`: where in the program the CPU made the entry. */
@@ -15,12 +16,14 @@ export function cpuEntryPlace(entry: Pick<DiagnosticEntry, 'block' | 'network' |
 
 /**
  * The CPU's diagnostic buffer, newest first as on a CPU's module information: its history comes
- * from GET .../diagnostics when the socket connects, new entries from the frames.
+ * from GET .../diagnostics when the socket connects, new entries from the frames. Each entry is
+ * said in the interface language from its catalogue key and params.
  */
 export function CpuDiagnostics() {
   const { t } = useTranslation();
   const { session } = useSession();
   const entries = useMonitor((state) => state.diagnostics);
+  const problemText = useProblemText();
   if (!session) return null;
   return (
     <section className="cpu-diagnostics" aria-label={t('diagnostics.cpuBuffer')} data-testid="cpu-diagnostics">
@@ -38,7 +41,7 @@ export function CpuDiagnostics() {
               <li key={`${entries.length - index}`} className="diagnostic diagnostic--error" data-testid="cpu-diagnostic">
                 <ErrorIcon className="diagnostic__icon" />
                 <code className="diagnostic__code">{entry.code}</code>
-                <span className="diagnostic__message">{entry.message}</span>
+                <span className="diagnostic__message">{problemText(entry)}</span>
                 <code className="diagnostic__location" dir="ltr">
                   {place ? `${place} · ` : ''}
                   {formatSimTime(entry.time_ms)}

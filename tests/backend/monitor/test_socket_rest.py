@@ -327,7 +327,19 @@ def test_the_diagnostic_buffer_shows_an_area_length_error_with_block_network_and
     assert response.status_code == 200
     entries = response.json()
     assert entries[0] == entry
-    assert set(entry) == {"time_ms", "code", "message", "block", "network", "line"}
+    assert set(entry) == {
+        "time_ms",
+        "code",
+        "message",
+        "block",
+        "network",
+        "line",
+        "key",
+        "params",
+    }
+    # The IDE says the entry in its language from the catalogue key and the params.
+    assert entry["key"] == "sim_area_length_read"
+    assert entry["params"]["address"] in entry["message"]
 
 
 # -- trend CSV ---------------------------------------------------------------------------------
