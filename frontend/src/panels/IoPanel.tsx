@@ -1,12 +1,12 @@
-import { useMemo } from 'react';
+import { memo, useMemo } from 'react';
 import { useTranslation } from 'react-i18next';
-import type { ForcedValue, WatchValue } from '../api/monitor';
+import type { WatchValue } from '../api/monitor';
+import type { MonitorCommand } from '../api/monitorClient';
 import { shownIoBytes, symbolsByAddress, symbolsOf, usedIoBytes, type SymbolEntry } from '../cpu/projectSymbols';
 import { useMonitor, useSession, useWatchEntries } from '../cpu/SessionContext';
 import { InfoIcon } from '../ui/icons';
 
 const BITS = [0, 1, 2, 3, 4, 5, 6, 7] as const;
-const EMPTY_FORCES: readonly ForcedValue[] = [];
 
 /** The value of a watched byte as a number, or null while unknown. */
 function byteOf(value: WatchValue | undefined): number | null {
@@ -20,17 +20,27 @@ interface BitProps {
   forced: boolean;
 }
 
-function InputBit({
+type Command = (command: MonitorCommand) => Promise<unknown>;
+
+/**
+ * One input switch. Memoised, like the lamps: frames come up to 30 times a second and most of
+ * them change no I/O bit, so only the bits whose props changed render again.
+ */
+const InputBit = memo(function InputBit({
   address,
   symbol,
   on,
   forced,
   disabled,
-  onToggle,
-  onForce,
-}: BitProps & { disabled: boolean; onToggle: () => void; onForce: () => void }) {
+  command,
+}: BitProps & { disabled: boolean; command: Command }) {
   const { t } = useTranslation();
   const name = symbol ? `${address} ${symbol.name}` : address;
+  // A forced input only changes by forcing it again; a free one is driven like a field device.
+  const onToggle = () =>
+    void command(forced ? { type: 'force', address, value: !on } : { type: 'set_input', address, value: !on });
+  const onForce = () =>
+    void command(forced ? { type: 'unforce', address } : { type: 'force', address, value: on === true });
   return (
     <div className={`io-bit io-bit--input${on ? ' io-bit--on' : ''}${forced ? ' io-bit--forced' : ''}`}>
       <button
@@ -74,9 +84,9 @@ function InputBit({
       ) : null}
     </div>
   );
-}
+});
 
-function OutputBit({ address, symbol, on, forced }: BitProps) {
+const OutputBit = memo(function OutputBit({ address, symbol, on, forced }: BitProps) {
   const { t } = useTranslation();
   const name = symbol ? `${address} ${symbol.name}` : address;
   const state = on === null ? t('io.unknown') : on ? t('io.on') : t('io.off');
@@ -101,6 +111,11 @@ function OutputBit({ address, symbol, on, forced }: BitProps) {
       ) : null}
     </div>
   );
+});
+
+/** The watched bytes' values, as one string (a new frame with the same values renders nothing). */
+function bytesKey(watch: Readonly<Record<string, WatchValue>>, entries: readonly string[]): string {
+  return entries.map((entry) => byteOf(watch[entry]) ?? '').join(',');
 }
 
 /**
@@ -112,8 +127,6 @@ export function IoPanel() {
   const { t } = useTranslation();
   const { session, sources, command } = useSession();
   const connection = useMonitor((state) => state.connection);
-  const watch = useMonitor((state) => state.watch);
-  const forces = useMonitor((state) => state.cpu?.forced ?? EMPTY_FORCES);
 
   const symbols = useMemo(() => symbolsByAddress(symbolsOf(sources)), [sources]);
   const bytes = useMemo(() => shownIoBytes(usedIoBytes(sources)), [sources]);
@@ -123,7 +136,28 @@ export function IoPanel() {
     [bytes],
   );
   useWatchEntries('io-panel', entries);
-  const forced = useMemo(() => new Map(forces.map((force) => [force.address, force.value === 1])), [forces]);
+  // Strings, so that the panel renders again only when a shown byte or a force changed.
+  const values = useMonitor((state) => bytesKey(state.watch, entries));
+  const forcesKey = useMonitor((state) =>
+    (state.cpu?.forced ?? []).map((force) => `${force.address}=${force.value}`).join(','),
+  );
+  const byteValues = useMemo(() => {
+    const parts = values.split(',');
+    return new Map(entries.map((entry, index) => [entry, parts[index] ? Number(parts[index]) : null]));
+  }, [entries, values]);
+  const forced = useMemo(
+    () =>
+      new Map(
+        forcesKey
+          .split(',')
+          .filter(Boolean)
+          .map((pair) => {
+            const [address = '', value] = pair.split('=');
+            return [address, value === '1'] as const;
+          }),
+      ),
+    [forcesKey],
+  );
 
   if (!session) {
     return (
@@ -144,7 +178,7 @@ export function IoPanel() {
       <section className="io-group" aria-label={t('io.inputs')}>
         <h3 className="io-group__title">{t('io.inputs')}</h3>
         {bytes.inputs.map((byte) => {
-          const value = byteOf(watch[`PIB${byte}`]);
+          const value = byteValues.get(`PIB${byte}`) ?? null;
           return (
             <div className="io-byte" key={byte} role="group" aria-label={`IB${byte}`} dir="ltr">
               <span className="io-byte__name">IB{byte}</span>
@@ -160,16 +194,7 @@ export function IoPanel() {
                     on={on}
                     forced={isForced}
                     disabled={!online}
-                    onToggle={() =>
-                      void command(
-                        isForced
-                          ? { type: 'force', address, value: !on }
-                          : { type: 'set_input', address, value: !on },
-                      )
-                    }
-                    onForce={() =>
-                      void command(isForced ? { type: 'unforce', address } : { type: 'force', address, value: on === true })
-                    }
+                    command={command}
                   />
                 );
               })}
@@ -180,7 +205,7 @@ export function IoPanel() {
       <section className="io-group" aria-label={t('io.outputs')}>
         <h3 className="io-group__title">{t('io.outputs')}</h3>
         {bytes.outputs.map((byte) => {
-          const value = byteOf(watch[`QB${byte}`]);
+          const value = byteValues.get(`QB${byte}`) ?? null;
           return (
             <div className="io-byte" key={byte} role="group" aria-label={`QB${byte}`} dir="ltr">
               <span className="io-byte__name">QB{byte}</span>
