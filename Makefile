@@ -17,7 +17,9 @@ help:
 	@echo "make run    install what is missing, then serve the IDE at http://127.0.0.1:8000"
 	@echo "make test   install what is missing (incl. Chromium), then run every test suite"
 	@echo "make bench        STL instructions/s of the CPU; SCL compile lines/s and statements/s;"
-	@echo "                  monitoring latency, 100 sessions, block status slowdown"
+	@echo "                  monitoring latency, 100 sessions, block status slowdown;"
+	@echo "                  the editor's longest main-thread task with a 500-network STL block"
+	@echo "                  and a 5,000-line SCL source, scrolled and monitored (Chromium)"
 	@echo "make conformance  awlsim's self-checking STL programs (downloads awlsim from PyPI)"
 	@echo "make install | make lock (re-pin Python dependencies) | make clean"
 
@@ -45,10 +47,11 @@ run: install
 test: install chromium
 	$(BIN)/python tests/run_suites.py
 
-bench: install
+bench: install chromium
 	$(BIN)/python -m nasaq.cpu.bench
 	$(BIN)/python -m nasaq.lang.scl.compile_bench
 	$(BIN)/python -m nasaq.monitor.bench
+	npm exec -- playwright test -c tests/e2e/bench/playwright.bench.config.ts
 
 conformance: install
 	$(BIN)/python tests/conformance/awlsim_suite.py

@@ -3,7 +3,7 @@
  * SCL tokenizers, markers with their catalogue code, and left-to-right text in every language.
  */
 import type { Page } from '@playwright/test';
-import { test, expect, chooseLanguage } from './fixtures';
+import { test, expect, chooseLanguage, visibleEditor } from './fixtures';
 
 type Monaco = typeof import('monaco-editor/editor/editor.api');
 /** Monaco's API, which the app puts on `window.monaco` (MonacoEnvironment.globalAPI). Functions
@@ -17,7 +17,6 @@ interface Token {
 }
 
 /** The editor of the tab in front. */
-const visibleEditor = (page: Page) => page.locator('.source-view:not([hidden]) [data-testid="code-editor"]');
 
 /**
  * The rendered tokens of the view line that contains `line`. Monaco draws one span per run of

@@ -8,11 +8,13 @@ import path from 'node:path';
 const root = path.resolve(__dirname, '../..');
 const port = Number(process.env.E2E_PORT ?? 8765);
 export const baseURL = `http://127.0.0.1:${port}`;
-const dataDir = path.join(__dirname, '.output', 'data');
+// Each port gets its own folder, so runs on different ports (E2E_PORT) can go side by side.
+const output = path.join(__dirname, '.output', port === 8765 ? '' : String(port));
+const dataDir = path.join(output, 'data');
 
 export default defineConfig({
   testDir: '.',
-  outputDir: path.join(__dirname, '.output', 'results'),
+  outputDir: path.join(output, 'results'),
   timeout: 30_000,
   expect: { timeout: 5_000 },
   fullyParallel: false,

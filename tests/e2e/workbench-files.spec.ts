@@ -5,7 +5,7 @@
  */
 import type { Locator, Page } from '@playwright/test';
 import AxeBuilder from '@axe-core/playwright';
-import { test, expect, chooseLanguage } from './fixtures';
+import { test, expect, chooseLanguage, visibleEditor, tree, expandProject, openFile } from './fixtures';
 
 type Monaco = typeof import('monaco-editor/editor/editor.api');
 type WithMonaco = Window & { monaco: Monaco };
@@ -16,25 +16,6 @@ interface ShownMarker {
   line: number;
 }
 
-const visibleEditor = (page: Page) => page.locator('.source-view:not([hidden]) [data-testid="code-editor"]');
-const tree = (page: Page) => page.getByTestId('block-tree');
-
-/** Expands an example project in the tree (a click on its row) and returns its id. */
-async function expandProject(page: Page, name: string): Promise<number> {
-  const node = tree(page).getByRole('treeitem', { name, exact: true });
-  await node.click();
-  await expect(node).toHaveAttribute('aria-expanded', 'true');
-  const testId = await node.getAttribute('data-testid');
-  return Number(testId?.replace('project-node-', ''));
-}
-
-/** Double-clicks a file of an expanded project and waits for its editor. */
-async function openFile(page: Page, projectId: number, name: string): Promise<Locator> {
-  await tree(page).getByTestId(`file-node-${projectId}-${name}`).dblclick();
-  const editor = visibleEditor(page);
-  await expect(editor).toHaveAttribute('data-state', 'ready', { timeout: 15_000 });
-  return editor;
-}
 
 /** The markers Monaco shows in the model of the editor in front. */
 function markersOf(page: Page): Promise<ShownMarker[]> {

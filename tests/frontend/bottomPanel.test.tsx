@@ -28,11 +28,11 @@ function selectedTab() {
 }
 
 describe('bottom panel', () => {
-  it('is a tab list with Diagnostics, Watch table, Trend and I/O, Diagnostics first', () => {
+  it('is a tab list with Diagnostics, Watch table, Trend, I/O and Call stack, Diagnostics first', () => {
     healthyServer();
     renderApp();
     expect(screen.getByRole('tablist', { name: 'Output panels' })).toBeTruthy();
-    expect(tabNames()).toEqual(['Diagnostics0Problems: 0', 'Watch table', 'Trend', 'I/O']);
+    expect(tabNames()).toEqual(['Diagnostics0Problems: 0', 'Watch table', 'Trend', 'I/O', 'Call stack']);
     const tab = selectedTab()!;
     expect(tab.textContent).toContain('Diagnostics');
     const panel = document.getElementById(tab.getAttribute('aria-controls')!)!;
@@ -57,27 +57,29 @@ describe('bottom panel', () => {
   it('moves between tabs with the arrow keys, Home and End, with one tab stop', async () => {
     healthyServer();
     const { user } = renderApp();
-    const [diagnostics, watch, trend, io] = screen.getAllByRole('tab');
-    expect([diagnostics, watch, trend, io].map((tab) => tab!.tabIndex)).toEqual([0, -1, -1, -1]);
+    const [diagnostics, watch, trend, io, debug] = screen.getAllByRole('tab');
+    expect([diagnostics, watch, trend, io, debug].map((tab) => tab!.tabIndex)).toEqual([0, -1, -1, -1, -1]);
 
     diagnostics!.focus();
     await user.keyboard('{ArrowRight}');
     expect(document.activeElement).toBe(watch);
     expect(watch!.getAttribute('aria-selected')).toBe('true');
-    expect([diagnostics, watch, trend, io].map((tab) => tab!.tabIndex)).toEqual([-1, 0, -1, -1]);
+    expect([diagnostics, watch, trend, io, debug].map((tab) => tab!.tabIndex)).toEqual([-1, 0, -1, -1, -1]);
     await user.keyboard('{ArrowRight}');
     expect(document.activeElement).toBe(trend);
     await user.keyboard('{ArrowRight}');
     expect(document.activeElement).toBe(io);
     await user.keyboard('{ArrowRight}');
+    expect(document.activeElement).toBe(debug);
+    await user.keyboard('{ArrowRight}');
     expect(document.activeElement).toBe(diagnostics);
     await user.keyboard('{ArrowLeft}');
-    expect(document.activeElement).toBe(io);
-    expect(io!.getAttribute('aria-selected')).toBe('true');
+    expect(document.activeElement).toBe(debug);
+    expect(debug!.getAttribute('aria-selected')).toBe('true');
     await user.keyboard('{Home}');
     expect(document.activeElement).toBe(diagnostics);
     await user.keyboard('{End}');
-    expect(document.activeElement).toBe(io);
+    expect(document.activeElement).toBe(debug);
   });
 
   it('mirrors the arrow keys in a right-to-left language', async () => {

@@ -13,7 +13,10 @@ export class FakeModel {
     public language: string,
   ) {}
   getValue = () => this.value;
+  getLanguageId = () => this.language;
   getLineContent = (line: number) => this.value.split('\n')[line - 1] ?? '';
+  getLineCount = () => this.value.split('\n').length;
+  getLineMaxColumn = (line: number) => this.getLineContent(line).length + 1;
   getFullModelRange = () => ({ startLineNumber: 1, startColumn: 1, endLineNumber: 1, endColumn: 1 });
   pushEditOperations = (_before: unknown, edits: Array<{ text: string }>) => {
     this.value = edits[0]!.text;
@@ -42,13 +45,47 @@ export class FakeModel {
 interface FakeAction {
   id: string;
   label: string;
+  keybindings?: number[];
   run: (editor: FakeEditor) => void;
 }
+
+/** A decoration as the app gives it to Monaco. */
+export interface FakeDecoration {
+  range: { startLineNumber: number; startColumn: number; endLineNumber: number; endColumn: number };
+  options: Record<string, unknown>;
+}
+
+/** `editor.createDecorationsCollection()`: what it holds now. */
+export class FakeDecorations {
+  items: FakeDecoration[] = [];
+  sets = 0;
+  constructor(initial: FakeDecoration[] = []) {
+    this.items = [...initial];
+  }
+  set = (items: FakeDecoration[]) => {
+    this.items = [...items];
+    this.sets += 1;
+  };
+  clear = () => {
+    this.items = [];
+  };
+}
+
+/** Monaco's mouse target types the app reads. */
+export const MouseTargetType = { CONTENT_TEXT: 6, GUTTER_GLYPH_MARGIN: 2 };
 
 export class FakeEditor {
   disposed = false;
   blurListeners = new Set<Listener>();
   mouseListeners = new Set<(event: unknown) => void>();
+  contextMenuListeners = new Set<(event: unknown) => void>();
+  scrollListeners = new Set<Listener>();
+  cursorListeners = new Set<Listener>();
+  layoutListeners = new Set<Listener>();
+  decorationCollections: FakeDecorations[] = [];
+  /** The view: 20 px lines, `viewLines` of them in view from `scrollTop`. */
+  scrollTop = 0;
+  viewLines = 20;
   actions = new Map<string, FakeAction>();
   position = { lineNumber: 1, column: 1 };
   revealed: number[] = [];
@@ -66,6 +103,57 @@ export class FakeEditor {
     this.mouseListeners.add(listener);
     return { dispose: () => this.mouseListeners.delete(listener) };
   };
+  onContextMenu = (listener: (event: unknown) => void) => {
+    this.contextMenuListeners.add(listener);
+    return { dispose: () => this.contextMenuListeners.delete(listener) };
+  };
+  onDidScrollChange = (listener: Listener) => {
+    this.scrollListeners.add(listener);
+    return { dispose: () => this.scrollListeners.delete(listener) };
+  };
+  onDidChangeCursorPosition = (listener: Listener) => {
+    this.cursorListeners.add(listener);
+    return { dispose: () => this.cursorListeners.delete(listener) };
+  };
+  onDidLayoutChange = (listener: Listener) => {
+    this.layoutListeners.add(listener);
+    return { dispose: () => this.layoutListeners.delete(listener) };
+  };
+  onDidChangeModelContent = (listener: Listener) => this.getModel().onDidChangeContent(listener);
+  createDecorationsCollection = (initial: FakeDecoration[] = []) => {
+    const collection = new FakeDecorations(initial);
+    this.decorationCollections.push(collection);
+    return collection;
+  };
+  /** Every decoration the app shows now. */
+  decorations = () => this.decorationCollections.flatMap((collection) => collection.items);
+  getScrollTop = () => this.scrollTop;
+  getTopForLineNumber = (line: number) => (line - 1) * 20;
+  getVisibleRanges = () => {
+    const first = Math.floor(this.scrollTop / 20) + 1;
+    const last = Math.min(this.getModel().getLineCount(), first + this.viewLines - 1);
+    return [{ startLineNumber: first, startColumn: 1, endLineNumber: last, endColumn: 1 }];
+  };
+  revealLineInCenterIfOutsideViewport = (line: number) => this.revealed.push(line);
+  /** The user scrolls the text to `top` pixels. */
+  scrollTo = (top: number) => {
+    this.scrollTop = top;
+    this.scrollListeners.forEach((listener) => listener());
+  };
+  /** The caret moves (a click or the arrow keys). */
+  moveCaret = (lineNumber: number, column = 1) => {
+    this.position = { lineNumber, column };
+    this.cursorListeners.forEach((listener) => listener());
+  };
+  /** A click in the glyph margin (`right`: the right button, which opens the context menu). */
+  clickGlyph = (lineNumber: number, right = false) => {
+    const target = { type: MouseTargetType.GUTTER_GLYPH_MARGIN, position: { lineNumber, column: 1 } };
+    const event = { leftButton: !right, rightButton: right, ctrlKey: false, metaKey: false, preventDefault: () => undefined };
+    this.mouseListeners.forEach((listener) => listener({ target, event }));
+    if (right) this.contextMenuListeners.forEach((listener) => listener({ target, event }));
+  };
+  /** Runs an action by id, with the caret where it is. */
+  runAction = (id: string) => this.actions.get(id)?.run(this);
   addAction = (action: FakeAction) => {
     this.actions.set(action.id, action);
     return { dispose: () => this.actions.delete(action.id) };
@@ -89,14 +177,34 @@ export class FakeEditor {
   };
 }
 
+/** A completion or hover provider registered for a language (`monaco.languages.register*`). */
+export interface FakeProvider {
+  kind: 'completion' | 'hover';
+  language: string;
+  provider: Record<string, unknown>;
+  disposed: boolean;
+}
+
+function register(kind: FakeProvider['kind'], language: string, provider: Record<string, unknown>) {
+  const entry: FakeProvider = { kind, language, provider, disposed: false };
+  fake.providers.push(entry);
+  return { dispose: () => void (entry.disposed = true) };
+}
+
 export const fake = {
   editors: [] as FakeEditor[],
   models: [] as FakeModel[],
   markers: [] as Array<{ model: FakeModel; owner: string; markers: Array<Record<string, unknown>> }>,
+  providers: [] as FakeProvider[],
   reset() {
     this.editors.length = 0;
     this.models.length = 0;
     this.markers.length = 0;
+    this.providers.length = 0;
+  },
+  /** The newest provider of a kind for a language that is still registered. */
+  providerOf(kind: FakeProvider['kind'], language: string) {
+    return this.providers.filter((p) => p.kind === kind && p.language === language && !p.disposed).at(-1)?.provider;
   },
   /** The newest markers set on a model. */
   markersOf(model: FakeModel) {
@@ -105,9 +213,17 @@ export const fake = {
 };
 
 const monaco = {
+  languages: {
+    CompletionItemKind: { Operator: 11, Keyword: 17, Snippet: 27, Function: 1, Constant: 14, Field: 3, Module: 8, TypeParameter: 24 },
+    CompletionItemInsertTextRule: { InsertAsSnippet: 4 },
+    registerCompletionItemProvider: (language: string, provider: Record<string, unknown>) => register('completion', language, provider),
+    registerHoverProvider: (language: string, provider: Record<string, unknown>) => register('hover', language, provider),
+  },
   MarkerSeverity: { Hint: 1, Info: 2, Warning: 4, Error: 8 },
-  KeyCode: { F12: 70 },
+  KeyCode: { F12: 70, F9: 67 },
   editor: {
+    MouseTargetType,
+    TrackedRangeStickiness: { AlwaysGrowsWhenTypingAtEdges: 0, NeverGrowsWhenTypingAtEdges: 1 },
     createModel: (value: string, language: string) => {
       const model = new FakeModel(value, language);
       fake.models.push(model);

@@ -11,7 +11,7 @@ from fastapi import APIRouter, FastAPI
 from fastapi.middleware.gzip import GZipMiddleware
 
 from nasaq import __version__
-from nasaq.api import archive, files, health, projects, sessions, workbench
+from nasaq.api import archive, files, health, outline, projects, sessions, symbols, workbench
 from nasaq.api.docs import install_docs
 from nasaq.api.errors import install_error_handlers
 from nasaq.api.frontend import install_frontend
@@ -66,6 +66,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     api.include_router(projects.router)
     api.include_router(files.router)
     api.include_router(workbench.router)
+    api.include_router(symbols.router)
+    api.include_router(outline.router)
     api.include_router(sessions.router)
     app.include_router(api)
     install_docs(app)

@@ -222,7 +222,12 @@ def breakpoint_indices(info: BlockInfo, location: Location) -> list[int]:
     if not hits:
         later = sorted({v for v in info.lines if v is not None and line is not None and v > line})
         hint = f" (the next line with code is {later[0]})" if later else ""
-        raise MonitorError("MON604", where=f"{info.file or info.name} line {line}", hint=hint)
+        raise MonitorError(
+            "MON604",
+            where=f"{info.file or info.name} line {line}",
+            hint=hint,
+            next_line=later[0] if later else None,
+        )
     if info.language == "stl":
         return hits[:1]
     return hits

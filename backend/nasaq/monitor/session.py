@@ -453,7 +453,13 @@ class Session:
                 return info, breakpoint_indices(info, location)
             later += [v for v in info.lines if v is not None and v > line]
         hint = f" (the next line with code is {min(later)})" if later else ""
-        raise MonitorError("MON604", where=f"{location.file} line {line}", hint=hint)
+        # next_line: so that a client can offer to move the breakpoint there.
+        raise MonitorError(
+            "MON604",
+            where=f"{location.file} line {line}",
+            hint=hint,
+            next_line=min(later) if later else None,
+        )
 
     # -- block information and instrumentation ---------------------------------------------------
     def info(self, key: Key) -> BlockInfo:

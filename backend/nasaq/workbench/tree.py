@@ -20,14 +20,14 @@ from nasaq.lang.stl import SourceFile, compile_sources
 from nasaq.workbench.names import language_of
 
 KindName = Literal["OB", "FB", "FC", "DB", "UDT"]
-_KINDS: dict[BlockKind, KindName] = {
+BLOCK_KINDS: dict[BlockKind, KindName] = {
     BlockKind.OB: "OB",
     BlockKind.FB: "FB",
     BlockKind.FC: "FC",
     BlockKind.DB: "DB",
     BlockKind.UDT: "UDT",
 }
-_ORDER = {kind: place for place, kind in enumerate(_KINDS.values())}
+KIND_ORDER = {kind: place for place, kind in enumerate(BLOCK_KINDS.values())}
 
 _HEADER = re.compile(
     r"^[ \t]*(?:ORGANIZATION_BLOCK|FUNCTION_BLOCK|FUNCTION|DATA_BLOCK|TYPE)[ \t]+"
@@ -56,7 +56,7 @@ class ProjectBuild(BaseModel):
     diagnostics: list[Diagnostic]
 
 
-def _headers(text: str) -> dict[str, int]:
+def header_lines(text: str) -> dict[str, int]:
     """Each block header's identity (``FB10``, or a casefolded symbol) -> its first line."""
     found: dict[str, int] = {}
     for match in _HEADER.finditer(text):
@@ -68,7 +68,7 @@ def _headers(text: str) -> dict[str, int]:
     return found
 
 
-def _line(block: Block, headers: dict[str, int]) -> int | None:
+def header_line(block: Block, headers: dict[str, int]) -> int | None:
     for key in (f"{block.kind.value}{block.number}", block.name.casefold()):
         if key and key in headers:
             return headers[key]
@@ -81,11 +81,11 @@ def _tree(blocks: Iterable[Block], texts: dict[str, str]) -> list[TreeBlock]:
     tree: list[TreeBlock] = []
     for block in blocks:
         language = language_of(block.file)
-        kind = _KINDS.get(block.kind)
+        kind = BLOCK_KINDS.get(block.kind)
         if kind is None or block.file not in texts or language not in ("stl", "scl"):
             continue  # the IEC library FCs the compiler adds: not the user's blocks
         if block.file not in headers:
-            headers[block.file] = _headers(texts[block.file])
+            headers[block.file] = header_lines(texts[block.file])
         tree.append(
             TreeBlock(
                 kind=kind,
@@ -94,11 +94,11 @@ def _tree(blocks: Iterable[Block], texts: dict[str, str]) -> list[TreeBlock]:
                 title=block.title,
                 language=language,
                 file=block.file,
-                line=_line(block, headers[block.file]),
+                line=header_line(block, headers[block.file]),
                 instance_of=block.attributes.get("instance_of"),
             )
         )
-    return sorted(tree, key=lambda item: (_ORDER[item.kind], item.number))
+    return sorted(tree, key=lambda item: (KIND_ORDER[item.kind], item.number))
 
 
 def build(sources: list[tuple[str, str]]) -> ProjectBuild:

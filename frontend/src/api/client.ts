@@ -140,6 +140,11 @@ export function createProject(input: ProjectCreate): Promise<Project> {
   });
 }
 
+/** `PATCH /api/projects/{id}`: a new name (unique, letter case aside; API105 otherwise). */
+export function renameProject(projectId: number, name: string): Promise<Project> {
+  return request<Project>(`/api/projects/${projectId}`, { method: 'PATCH', body: JSON.stringify({ name }) });
+}
+
 export function deleteProject(projectId: number): Promise<void> {
   return request<void>(`/api/projects/${projectId}`, { method: 'DELETE' });
 }

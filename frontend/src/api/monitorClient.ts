@@ -21,6 +21,7 @@ import type {
   Frame,
   Hello,
   HoldState,
+  Location as ProgramLocation,
   ServerMessage,
   TrendSample,
   WatchValue,
@@ -72,6 +73,21 @@ export interface WatchEntryReport {
 
 export type ConnectionStatus = 'connecting' | 'open' | 'reconnecting' | 'closed';
 
+/** A breakpoint the client keeps set on the server (see {@link MonitorClient.setBreakpoints}). */
+export interface BreakpointRequest {
+  /** The caller's name for it (the editor uses `project:file:line`). */
+  key: string;
+  location: ProgramLocation;
+  condition: string | null;
+}
+
+/** What the server said about a breakpoint: waiting for its answer, set as `id`, or refused. */
+export interface BreakpointReport {
+  state: 'pending' | 'set' | 'refused';
+  id: number | null;
+  problem: Problem | null;
+}
+
 export interface MonitorState {
   connection: ConnectionStatus;
   hello: Hello | null;
@@ -94,6 +110,8 @@ export interface MonitorState {
   diagnostics: readonly DiagnosticEntry[];
   /** Why the session ended for this client (MON614 closed, MON609 unknown, MON605 full). */
   closedBy: Problem | null;
+  /** The server's answer for each breakpoint of {@link MonitorClient.setBreakpoints}, by key. */
+  breakpoints: Readonly<Record<string, BreakpointReport>>;
 }
 
 export const MAX_TREND_SAMPLES = 20_000;
@@ -115,6 +133,7 @@ export function initialMonitorState(): MonitorState {
     released: false,
     diagnostics: [],
     closedBy: null,
+    breakpoints: {},
   };
 }
 
@@ -215,6 +234,12 @@ export class MonitorClient {
   private watchQueued = false;
   private trendEntries: readonly string[] = [];
   private openBlockName: string | null = null;
+  /** The breakpoints the caller wants, by key. */
+  private wantedBreakpoints = new Map<string, BreakpointRequest>();
+  /** What was sent for each key (the request object) and the id the server gave it. */
+  private readonly sentBreakpoints = new Map<string, { request: BreakpointRequest; id: number | null }>();
+  /** Whether this client ever set a breakpoint (only then it clears them after a reconnect). */
+  private usedBreakpoints = false;
 
   constructor(options: MonitorClientOptions) {
     this.options = {
@@ -399,6 +424,7 @@ export class MonitorClient {
     this.flushWatch();
     if (this.trendEntries.length > 0) this.sendTrend().catch(() => undefined);
     if (this.openBlockName !== null) this.sendQuietly({ type: 'open_block', block: this.openBlockName });
+    this.resendBreakpoints();
   }
 
   private sendQuietly(command: MonitorCommand): void {
@@ -471,9 +497,82 @@ export class MonitorClient {
     return this.send({ type: 'open_block', block });
   }
 
+  /**
+   * The breakpoints to keep set (all of them, each time): the client sets the new ones, clears
+   * the removed ones and sets a changed one again. They are sent again after every (re)connect
+   * and download, since a new program starts without breakpoints; `state.breakpoints` tells
+   * which the server refused and why.
+   */
+  setBreakpoints(requests: readonly BreakpointRequest[]): void {
+    this.wantedBreakpoints = new Map(requests.map((request) => [request.key, request]));
+    const reports = { ...this.state.breakpoints };
+    for (const key of Object.keys(reports)) if (!this.wantedBreakpoints.has(key)) delete reports[key];
+    for (const [key, sent] of [...this.sentBreakpoints]) {
+      const wanted = this.wantedBreakpoints.get(key);
+      if (wanted && sameBreakpoint(wanted, sent.request)) continue;
+      this.sentBreakpoints.delete(key);
+      if (sent.id !== null) this.sendQuietly({ type: 'clear_breakpoint', id: sent.id });
+    }
+    this.update({ breakpoints: reports });
+    for (const request of this.wantedBreakpoints.values()) {
+      if (!this.sentBreakpoints.has(request.key)) this.sendBreakpoint(request);
+    }
+  }
+
+  private resendBreakpoints(): void {
+    this.sentBreakpoints.clear();
+    // A reconnect finds the session's breakpoints still set: start from none, then set ours.
+    if (this.usedBreakpoints) this.sendQuietly({ type: 'clear_breakpoint', id: null });
+    for (const request of this.wantedBreakpoints.values()) this.sendBreakpoint(request);
+  }
+
+  private sendBreakpoint(request: BreakpointRequest): void {
+    if (this.state.connection !== 'open') return;
+    this.usedBreakpoints = true;
+    const sent = { request, id: null as number | null };
+    this.sentBreakpoints.set(request.key, sent);
+    const report = (value: BreakpointReport) => {
+      if (this.sentBreakpoints.get(request.key) !== sent) return;
+      this.update((state) => ({ ...state, breakpoints: { ...state.breakpoints, [request.key]: value } }));
+    };
+    report({ state: 'pending', id: null, problem: null });
+    this.send({ type: 'set_breakpoint', location: request.location, condition: request.condition })
+      .then((result) => {
+        const id = typeof result?.id === 'number' ? result.id : null;
+        if (this.sentBreakpoints.get(request.key) !== sent) {
+          // Removed or changed while the server was setting it.
+          if (id !== null) this.sendQuietly({ type: 'clear_breakpoint', id });
+          return;
+        }
+        sent.id = id;
+        report({ state: 'set', id, problem: null });
+      })
+      .catch((error: unknown) => {
+        if (!(error instanceof MonitorCommandError) || error.code === CONNECTION_LOST.code) {
+          // Sent again at the next hello.
+          if (this.sentBreakpoints.get(request.key) === sent) this.sentBreakpoints.delete(request.key);
+          return;
+        }
+        report({ state: 'refused', id: null, problem: { code: error.code, key: error.key, message: error.message, params: error.params } });
+      });
+  }
+
   /** Forgets what belonged to the replaced program (after a download into this session). */
   programReplaced(): void {
     this.update({ block: null, hold: null, released: false, diagnostics: [], trend: [] });
     this.resubscribe();
   }
+}
+
+function sameBreakpoint(a: BreakpointRequest, b: BreakpointRequest): boolean {
+  const x = a.location;
+  const y = b.location;
+  return (
+    a.condition === b.condition &&
+    x.file === y.file &&
+    x.block === y.block &&
+    x.line === y.line &&
+    x.network === y.network &&
+    x.instruction === y.instruction
+  );
 }

@@ -3,13 +3,18 @@ import { useEditorTabs } from '../editor/EditorTabsContext';
 import { useServerHealth } from '../health/ServerHealth';
 import { Dialog } from '../ui/Dialog';
 import { NasaqMark } from '../ui/icons';
-import { SHORTCUTS } from '../ui/shortcuts';
 
-const HERE = ['projects', 'languages', 'panels', 'simulator'] as const;
-const COMING = ['editors', 'lessons'] as const;
+const HERE = ['projects', 'editors', 'simulator', 'monitoring', 'panels', 'languages'] as const;
+const COMING = ['graphical', 'lessons'] as const;
 
-/** Help → About: the server's version and a short "what's here / what's coming". */
-export function AboutDialog({ onClose }: { onClose: () => void }) {
+interface AboutDialogProps {
+  onClose: () => void;
+  /** Opens the keyboard shortcuts dialog (in place of this one). */
+  onShowShortcuts: () => void;
+}
+
+/** Help → About: the server's version, a short "what's here / what's coming", the shortcuts. */
+export function AboutDialog({ onClose, onShowShortcuts }: AboutDialogProps) {
   const { t } = useTranslation();
   const { health } = useServerHealth();
   const { openStart } = useEditorTabs();
@@ -80,16 +85,12 @@ export function AboutDialog({ onClose }: { onClose: () => void }) {
         </div>
         <section>
           <h3 className="about__heading">{t('about.shortcutsTitle')}</h3>
-          <dl className="about__shortcuts" data-testid="about-shortcuts">
-            {SHORTCUTS.map((shortcut) => (
-              <div key={shortcut.keys} className="about__shortcut">
-                <dt>
-                  <kbd dir="ltr">{shortcut.keys}</kbd>
-                </dt>
-                <dd>{t(shortcut.labelKey)}</dd>
-              </div>
-            ))}
-          </dl>
+          <p className="dialog__text">
+            {t('shortcuts.aboutText')}{' '}
+            <button type="button" className="button button--small" data-testid="about-shortcuts" onClick={onShowShortcuts}>
+              {t('shortcuts.open')}
+            </button>
+          </p>
         </section>
       </div>
     </Dialog>

@@ -3,6 +3,7 @@ import { CpuStatus } from '../cpu/CpuStatus';
 import { useServerHealth } from '../health/ServerHealth';
 import { nativeNameOf } from '../i18n/languages';
 import { useUiLanguage } from '../i18n/useDocumentLanguage';
+import { CompileStatus } from './CompileButton';
 
 function ServerStatus() {
   const { t } = useTranslation();
@@ -23,7 +24,7 @@ function ServerStatus() {
   );
 }
 
-/** The bottom line: server connection, interface language and CPU state. */
+/** The bottom line: server connection, interface language, the last compile and CPU state. */
 export function StatusBar() {
   const { t } = useTranslation();
   const { language } = useUiLanguage();
@@ -33,6 +34,7 @@ export function StatusBar() {
       <span className="status-item" data-testid="ui-language-status">
         {t('status.language')} <span lang={language}>{nativeNameOf(language)}</span>
       </span>
+      <CompileStatus />
       <CpuStatus />
     </footer>
   );

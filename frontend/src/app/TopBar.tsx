@@ -1,9 +1,11 @@
-import { useState, type RefObject } from 'react';
+import { useEffect, useState, type RefObject } from 'react';
 import { useTranslation } from 'react-i18next';
 import { CpuToolbar } from '../cpu/CpuToolbar';
 import { LanguageSwitch } from '../i18n/LanguageSwitch';
 import { BookIcon, HelpIcon, NasaqMark } from '../ui/icons';
 import { AboutDialog } from './AboutDialog';
+import { ShortcutsDialog } from './ShortcutsDialog';
+import { ariaKeys, opensShortcutHelp } from './shortcuts';
 
 interface TopBarProps {
   lessonPaneOpen: boolean;
@@ -11,10 +13,23 @@ interface TopBarProps {
   lessonToggleRef?: RefObject<HTMLButtonElement | null>;
 }
 
-/** The application bar: product mark, CPU toolbar, language, lesson pane and help. */
+/** The application bar: product mark, CPU toolbar, language, lesson pane, shortcuts and help. */
 export function TopBar({ lessonPaneOpen, onToggleLessonPane, lessonToggleRef }: TopBarProps) {
   const { t } = useTranslation();
   const [aboutOpen, setAboutOpen] = useState(false);
+  const [shortcutsOpen, setShortcutsOpen] = useState(false);
+
+  // F1 (outside the code editor) or `?` lists the keyboard shortcuts.
+  useEffect(() => {
+    const onKey = (event: KeyboardEvent) => {
+      if (event.defaultPrevented || !opensShortcutHelp(event)) return;
+      event.preventDefault();
+      setAboutOpen(false);
+      setShortcutsOpen(true);
+    };
+    window.addEventListener('keydown', onKey);
+    return () => window.removeEventListener('keydown', onKey);
+  }, []);
 
   return (
     <header className="topbar">
@@ -33,6 +48,7 @@ export function TopBar({ lessonPaneOpen, onToggleLessonPane, lessonToggleRef }: 
           aria-pressed={lessonPaneOpen}
           aria-controls={lessonPaneOpen ? 'lesson-pane' : undefined}
           data-testid="lesson-toggle"
+          title={t('topbar.lessons')}
           onClick={onToggleLessonPane}
         >
           <BookIcon />
@@ -40,16 +56,38 @@ export function TopBar({ lessonPaneOpen, onToggleLessonPane, lessonToggleRef }: 
         </button>
         <button
           type="button"
+          className="topbar-button topbar-button--key"
+          aria-haspopup="dialog"
+          aria-label={t('shortcuts.open')}
+          aria-keyshortcuts={ariaKeys('help')}
+          title={`${t('shortcuts.open')} (F1)`}
+          data-testid="shortcuts-button"
+          onClick={() => setShortcutsOpen(true)}
+        >
+          <span aria-hidden="true">?</span>
+        </button>
+        <button
+          type="button"
           className="topbar-button"
           aria-haspopup="dialog"
           data-testid="help-button"
+          title={t('topbar.help')}
           onClick={() => setAboutOpen(true)}
         >
           <HelpIcon />
           <span>{t('topbar.help')}</span>
         </button>
       </div>
-      {aboutOpen ? <AboutDialog onClose={() => setAboutOpen(false)} /> : null}
+      {aboutOpen ? (
+        <AboutDialog
+          onClose={() => setAboutOpen(false)}
+          onShowShortcuts={() => {
+            setAboutOpen(false);
+            setShortcutsOpen(true);
+          }}
+        />
+      ) : null}
+      {shortcutsOpen ? <ShortcutsDialog onClose={() => setShortcutsOpen(false)} /> : null}
     </header>
   );
 }

@@ -7,6 +7,7 @@ import { SessionProvider } from '../cpu/SessionContext';
 import { ActiveProjectProvider } from '../projects/ActiveProject';
 import { ProjectTree } from '../projects/ProjectTree';
 import { usePersistentFlag } from '../ui/usePersistentState';
+import { CompileProvider } from './compile';
 import { StatusBar } from './StatusBar';
 import { TopBar } from './TopBar';
 
@@ -30,22 +31,24 @@ export function Workbench() {
   return (
     <ActiveProjectProvider>
       <SessionProvider>
-        <div className={lessonsOpen ? 'workbench workbench--lessons' : 'workbench'}>
-          <TopBar
-            lessonPaneOpen={lessonsOpen}
-            onToggleLessonPane={() => setLessonsOpen(!lessonsOpen)}
-            lessonToggleRef={lessonToggle}
-          />
-          <div className="workbench__body">
-            <ProjectTree />
-            <main className="workbench__main">
-              <EditorArea />
-              <BottomPanel />
-            </main>
-            {lessonsOpen ? <LessonPane onClose={closeLessons} /> : null}
+        <CompileProvider>
+          <div className={lessonsOpen ? 'workbench workbench--lessons' : 'workbench'}>
+            <TopBar
+              lessonPaneOpen={lessonsOpen}
+              onToggleLessonPane={() => setLessonsOpen(!lessonsOpen)}
+              lessonToggleRef={lessonToggle}
+            />
+            <div className="workbench__body">
+              <ProjectTree />
+              <main className="workbench__main">
+                <EditorArea />
+                <BottomPanel />
+              </main>
+              {lessonsOpen ? <LessonPane onClose={closeLessons} /> : null}
+            </div>
+            <StatusBar />
           </div>
-          <StatusBar />
-        </div>
+        </CompileProvider>
       </SessionProvider>
     </ActiveProjectProvider>
   );

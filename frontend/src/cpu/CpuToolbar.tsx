@@ -1,6 +1,7 @@
 import { useEffect, useId, useState, type ComponentType, type KeyboardEvent } from 'react';
 import { useTranslation } from 'react-i18next';
 import type { SetTime, Step } from '../api/monitor';
+import { CompileButton } from '../app/CompileButton';
 import { useActiveProject } from '../projects/ActiveProject';
 import { CloseIcon, PlayIcon, StepIcon, StopIcon } from '../ui/icons';
 import { ContinueIcon, DownloadIcon, RestartIcon } from './cpuIcons';
@@ -147,6 +148,7 @@ export function CpuToolbar() {
             {downloading ? t('cpu.download.busy') : t('cpu.download.text')}
           </span>
         </button>
+        <CompileButton />
         <CpuButton
           id="run"
           label={t('cpu.run.label')}

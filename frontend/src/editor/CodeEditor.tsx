@@ -1,10 +1,11 @@
-import { useEffect, useRef, useState } from 'react';
+import { useEffect, useRef, useState, type ReactNode } from 'react';
 import { useTranslation } from 'react-i18next';
 import type { editor as MonacoEditor, IDisposable } from 'monaco-editor/editor/editor.api';
 import type { Severity } from '../api/types';
 import { useUiLanguage } from '../i18n/useDocumentLanguage';
 import { loadMonaco, type MonacoApi } from './monaco/load';
 import { THEME_NAME } from './monaco/constants';
+import { bindModel, type ModelSource } from './intellisense/modelRegistry';
 
 export type SourceLanguage = 'stl' | 'scl' | 'symbols';
 
@@ -47,13 +48,25 @@ export interface CodeEditorProps {
    */
   onGoToDefinition?: (lineText: string, column: number) => void;
   definitionLabel?: string;
+  /** The project file the text is (completion and hover help use the project's outline). */
+  source?: ModelSource | null;
+  /**
+   * What the editor shows beside or over the text once Monaco is ready (online monitoring,
+   * breakpoints): rendered inside the editor's frame, given the editor and Monaco's API.
+   */
+  renderExtras?: (editor: MonacoEditor.IStandaloneCodeEditor, monaco: MonacoApi) => ReactNode;
   className?: string;
   'data-testid'?: string;
 }
 
+/** Draws what the editor shows beside or over its text (see `CodeEditorProps.renderExtras`). */
+export type RenderEditorExtras = NonNullable<CodeEditorProps['renderExtras']>;
+
 /** The bundled JetBrains Mono (styles/fonts.css), Vazirmatn for Arabic/Persian comments. */
 const FONT_FAMILY = "'JetBrains Mono Variable', 'JetBrains Mono', 'Vazirmatn Variable', ui-monospace, monospace";
 const FONT_SIZE = 13;
+/** The height of a line in pixels (the STL status rows are drawn at the same height). */
+export const LINE_HEIGHT = 20;
 const NO_MARKERS: readonly EditorMarker[] = [];
 const MARKER_OWNER = 'nasaq';
 
@@ -96,6 +109,8 @@ export function CodeEditor({
   reveal = null,
   onGoToDefinition,
   definitionLabel,
+  renderExtras,
+  source = null,
   className,
   'data-testid': testId,
 }: CodeEditorProps) {
@@ -107,6 +122,8 @@ export function CodeEditor({
   const onChangeRef = useRef(onChange);
   const onBlurRef = useRef(onBlur);
   const definitionRef = useRef(onGoToDefinition);
+  const sourceRef = useRef(source);
+  sourceRef.current = source;
   const applyingValue = useRef(false);
   const [status, setStatus] = useState<Status>('loading');
   const [attempt, setAttempt] = useState(0);
@@ -139,8 +156,11 @@ export function CodeEditor({
           fontFamily: FONT_FAMILY,
           fontSize: FONT_SIZE,
           fontLigatures: false,
-          lineHeight: 20,
+          lineHeight: LINE_HEIGHT,
           minimap: { enabled: false },
+          // STL has no nesting to guide, and each guide costs a layout read per line while
+          // scrolling (the longest tasks of a 500-network block under monitoring).
+          guides: { indentation: lang !== 'stl' },
           scrollBeyondLastLine: false,
           renderLineHighlight: 'all',
           tabSize: 4,
@@ -155,6 +175,7 @@ export function CodeEditor({
           unicodeHighlight: { ambiguousCharacters: false, invisibleCharacters: true },
         });
         disposables.push(
+          bindModel(model, () => sourceRef.current),
           model.onDidChangeContent(() => {
             if (!applyingValue.current) onChangeRef.current?.(model.getValue());
           }),
@@ -272,9 +293,12 @@ export function CodeEditor({
   }, [status, reveal]);
 
   const classes = ['code-editor', className].filter(Boolean).join(' ');
+  const readyEditor = status === 'ready' ? editorRef.current : null;
+  const readyMonaco = status === 'ready' ? monacoRef.current : null;
   return (
     <div className={classes} dir="ltr" data-testid={testId} data-state={status}>
       <div ref={hostRef} className="code-editor__host" />
+      {renderExtras && readyEditor && readyMonaco ? renderExtras(readyEditor, readyMonaco) : null}
       {status === 'loading' ? (
         <p className="code-editor__message" role="status" dir={uiDir}>
           {t('editor.code.loading')}

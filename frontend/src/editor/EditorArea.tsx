@@ -3,7 +3,9 @@ import { useTranslation } from 'react-i18next';
 import { flushAll } from './autosave';
 import { EditorEmptyState } from './EditorEmptyState';
 import { EditorTabStrip } from './EditorTabStrip';
-import { useEditorTabs, type EditorTab, type SourceTab } from './EditorTabsContext';
+import { DbEditorView } from '../dbeditor/DbEditorView';
+import { SymbolTableTab } from '../symbols/SymbolTableTab';
+import { useEditorTabs, type DbTab, type EditorTab, type SourceTab } from './EditorTabsContext';
 import { SourceView } from './SourceView';
 import { StartPage } from './StartPage';
 
@@ -48,6 +50,7 @@ export function EditorArea() {
   const { tabs, activeId } = useEditorTabs();
   const active = tabs.find((tab) => tab.id === activeId) ?? null;
   const sources = tabs.filter((tab): tab is SourceTab => tab.kind === 'source');
+  const dbs = tabs.filter((tab): tab is DbTab => tab.kind === 'db');
   useSaveOnLeave(tabs);
 
   return (
@@ -56,8 +59,15 @@ export function EditorArea() {
       <div className="editor-area__content">
         {active === null ? <EditorEmptyState /> : null}
         {active?.kind === 'start' ? <StartPage /> : null}
-        {sources.map((tab) => (
-          <SourceView key={tab.id} tab={tab} active={tab.id === activeId} />
+        {sources.map((tab) =>
+          tab.language === 'symbols' ? (
+            <SymbolTableTab key={tab.id} tab={tab} active={tab.id === activeId} />
+          ) : (
+            <SourceView key={tab.id} tab={tab} active={tab.id === activeId} />
+          ),
+        )}
+        {dbs.map((tab) => (
+          <DbEditorView key={tab.id} tab={tab} active={tab.id === activeId} />
         ))}
       </div>
     </section>

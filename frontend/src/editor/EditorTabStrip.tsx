@@ -4,7 +4,7 @@ import { useEditorTabs, type EditorTab } from './EditorTabsContext';
 
 export function useTabTitle(): (tab: EditorTab) => string {
   const { t } = useTranslation();
-  return (tab) => (tab.kind === 'source' ? tab.name : t(`editor.tabs.${tab.kind}`));
+  return (tab) => (tab.kind === 'source' || tab.kind === 'db' ? tab.name : t(`editor.tabs.${tab.kind}`));
 }
 
 /** The row of open editors; each has its own close button. */

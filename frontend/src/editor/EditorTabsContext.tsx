@@ -4,7 +4,7 @@ import type { EditorMarker, SourceLanguage } from './CodeEditor';
 import { languageOfFile } from './fileLanguage';
 
 /** What an editor tab shows. LAD/FBD and Graph editors join this list later. */
-export type EditorTabKind = 'start' | 'source';
+export type EditorTabKind = 'start' | 'source' | 'db';
 
 export interface StartTab {
   id: 'start';
@@ -57,7 +57,18 @@ export interface SourceTab {
   reveal: RevealRequest | null;
 }
 
-export type EditorTab = StartTab | SourceTab;
+/** The DB editor of a data block: its variables, offline values and (in a simulation) live ones. */
+export interface DbTab {
+  id: string;
+  kind: 'db';
+  projectId: number;
+  /** How the server finds the DB: `DB10` or its symbol. */
+  block: string;
+  /** What the tab shows: `DB10 LevelData`. */
+  name: string;
+}
+
+export type EditorTab = StartTab | SourceTab | DbTab;
 
 export interface NewSource {
   name: string;
@@ -81,6 +92,8 @@ interface EditorTabsValue {
   openStart: () => void;
   /** Opens a source in a new tab (or brings the tab of the same file to the front); its id. */
   openSource: (source: NewSource) => string;
+  /** Opens the DB editor of a data block (or brings its tab to the front); its id. */
+  openDb: (db: { projectId: number; block: string; name: string }) => string;
   /** The text of a source tab changed in its editor: it becomes dirty. */
   updateSource: (id: string, text: string) => void;
   /**
@@ -177,6 +190,21 @@ export function EditorTabsProvider({ children }: { children: ReactNode }) {
     return id;
   }, []);
 
+  const openDb = useCallback((db: { projectId: number; block: string; name: string }) => {
+    const existing = tabsRef.current.find(
+      (tab) => tab.kind === 'db' && tab.projectId === db.projectId && tab.block === db.block,
+    );
+    if (existing) {
+      setActiveId(existing.id);
+      return existing.id;
+    }
+    const id = `db-${nextId.current++}`;
+    const tab: DbTab = { id, kind: 'db', projectId: db.projectId, block: db.block, name: db.name };
+    setTabs((current) => [...current, tab]);
+    setActiveId(id);
+    return id;
+  }, []);
+
   const updateSource = useCallback((id: string, text: string) => {
     setTabs((current) =>
       current.map((tab) => (tab.kind === 'source' && tab.id === id && tab.text !== text ? { ...tab, text, dirty: true } : tab)),
@@ -236,7 +264,8 @@ export function EditorTabsProvider({ children }: { children: ReactNode }) {
 
   const closeFileTabs = useCallback((projectId: number, path?: string) => {
     const gone = (tab: EditorTab) =>
-      tab.kind === 'source' && !!tab.file && tab.file.projectId === projectId && (path === undefined || tab.file.path === path);
+      (tab.kind === 'source' && !!tab.file && tab.file.projectId === projectId && (path === undefined || tab.file.path === path)) ||
+      (tab.kind === 'db' && path === undefined && tab.projectId === projectId);
     const current = tabsRef.current;
     if (!current.some(gone)) return;
     const remaining = current.filter((tab) => !gone(tab));
@@ -261,6 +290,7 @@ export function EditorTabsProvider({ children }: { children: ReactNode }) {
       close,
       openStart,
       openSource,
+      openDb,
       updateSource,
       markSaved,
       setMarkers,
@@ -277,6 +307,7 @@ export function EditorTabsProvider({ children }: { children: ReactNode }) {
       close,
       openStart,
       openSource,
+      openDb,
       updateSource,
       markSaved,
       setMarkers,

@@ -5,8 +5,12 @@ import { useApiErrorText } from '../i18n/useApiErrorText';
 import { useUiLanguage } from '../i18n/useDocumentLanguage';
 import { projectContents } from '../projects/projectContents';
 import { ErrorIcon, WarningIcon } from '../ui/icons';
-import { CodeEditor } from './CodeEditor';
+import type { Problem } from '../api/monitorClient';
+import { CodeEditor, LINE_HEIGHT, type RenderEditorExtras } from './CodeEditor';
+import { EditorMonitoring } from './monitoring/EditorMonitoring';
+import { MonitorToggle, monitorToggleOf, rememberMonitorToggle } from './monitoring/MonitorToggle';
 import { findDefinition } from './definitions';
+import { outlines } from './intellisense/outlineStore';
 import { useEditorTabs, type SaveStatus, type SourceTab } from './EditorTabsContext';
 import { useOpenProjectFile } from './useOpenProjectFile';
 import { useSourceFile } from './useSourceFile';
@@ -40,6 +44,8 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
   const session = useSourceFile(tab);
   const openFile = useOpenProjectFile();
   const [notice, setNotice] = useState<string | null>(null);
+  const [monitoring, setMonitoring] = useState(() => monitorToggleOf(tab.id));
+  const [monitorProblem, setMonitorProblem] = useState<Problem | null>(null);
   const noticeTimer = useRef<ReturnType<typeof setTimeout> | null>(null);
   const file = tab.file;
 
@@ -60,7 +66,7 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
       const target = fileRef.current;
       if (!target) return;
       const blocks = projectContents.get(target.projectId)?.blocks ?? [];
-      const block = findDefinition(blocks, lineText, column);
+      const block = findDefinition(blocks, lineText, column, outlines.get(target.projectId)?.symbols);
       if (!block) {
         showNotice(t('editor.definition.notFound'));
         return;
@@ -76,6 +82,29 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
       ? t('editor.code.symbolsLabel', { name: tab.name })
       : t('editor.code.label', { language: LANGUAGE_NAMES[tab.language], name: tab.name });
   const save = tab.save;
+  const toggleMonitoring = useCallback(
+    (on: boolean) => {
+      rememberMonitorToggle(tab.id, on);
+      setMonitoring(on);
+    },
+    [tab.id],
+  );
+  const codeLanguage = tab.language === 'symbols' ? null : tab.language;
+  const renderExtras: RenderEditorExtras | undefined =
+    file && codeLanguage
+      ? (editor, monaco) => (
+          <EditorMonitoring
+            editor={editor}
+            monaco={monaco}
+            projectId={file.projectId}
+            file={file.path}
+            language={codeLanguage}
+            monitoring={monitoring && active}
+            lineHeight={LINE_HEIGHT}
+            onProblem={setMonitorProblem}
+          />
+        )
+      : undefined;
 
   return (
     <div className="source-view" hidden={!active} data-testid={`source-view-${tab.id}`}>
@@ -132,6 +161,8 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
         reveal={tab.reveal}
         onGoToDefinition={file ? goToDefinition : undefined}
         definitionLabel={t('editor.definition.label')}
+        source={file ? { projectId: file.projectId, path: file.path } : null}
+        renderExtras={renderExtras}
         ariaLabel={label}
         className="source-view__editor"
         data-testid="code-editor"
@@ -144,6 +175,9 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
           <span className="source-status__notice" role="status">
             {notice}
           </span>
+          {codeLanguage ? (
+            <MonitorToggle on={monitoring} onChange={toggleMonitoring} projectId={file.projectId} problem={monitorProblem} />
+          ) : null}
         </div>
       ) : null}
     </div>

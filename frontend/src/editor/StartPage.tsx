@@ -7,11 +7,11 @@ import type { SourceLanguage } from './CodeEditor';
 import { useEditorTabs, type EditorTab } from './EditorTabsContext';
 import { SCL_EXAMPLE, STL_EXAMPLE } from './examples';
 
-const WORKS_NOW = ['projects', 'languages', 'rtl', 'offline'] as const;
-const COMING = ['stlScl', 'simulator', 'ladFbd', 'graph', 'lessons'] as const;
-const STEPS = ['create', 'language', 'lessons'] as const;
+const WORKS_NOW = ['projects', 'stlScl', 'simulator', 'monitoring', 'languages', 'rtl', 'offline'] as const;
+const COMING = ['ladFbd', 'graph', 'lessons'] as const;
+const STEPS = ['create', 'code', 'download', 'language', 'lessons'] as const;
 
-/** A self-holding motor circuit in STL: what the STL editor will open with. Code stays LTR. */
+/** A self-holding motor circuit in STL, as the STL editor shows it. Code stays LTR. */
 const STL_SAMPLE = `      A(
       O     "Start"        // I 0.0
       O     "Motor"        // Q 4.0
@@ -121,7 +121,7 @@ export function StartPage() {
 
         <section className="card" aria-labelledby={`${titleId}-sample`}>
           <h2 id={`${titleId}-sample`} className="card__title">
-            {t('start.sample.title')} <ComingBadge />
+            {t('start.sample.title')}
           </h2>
           <p className="card__text">{t('start.sample.text')}</p>
           <figure className="code-figure" aria-labelledby={`${titleId}-code`}>

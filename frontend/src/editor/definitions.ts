@@ -1,3 +1,4 @@
+import type { OutlineSymbol } from '../api/outline';
 import type { BlockKind, TreeBlock } from '../api/types';
 
 /** What names a block at a place in a line of STL or SCL. */
@@ -55,8 +56,29 @@ export function findBlock(blocks: readonly TreeBlock[], reference: BlockReferenc
   return blocks.find((block) => block.name.toLowerCase() === name) ?? null;
 }
 
-/** Where the block named at `column` of `line` is defined, if the project has it. */
-export function findDefinition(blocks: readonly TreeBlock[], line: string, column: number): TreeBlock | null {
+/** A place to open: a file and, when known, its line. */
+export interface DefinitionTarget {
+  file: string;
+  line: number | null;
+}
+
+/**
+ * Where what is named at `column` of `line` is defined: a block of the project (its header), else
+ * a symbol of its symbol table (the table's line: `"Pump"` -> `symbols.sdf`, line 3). A symbol
+ * that names a block goes to the block.
+ */
+export function findDefinition(
+  blocks: readonly TreeBlock[],
+  line: string,
+  column: number,
+  symbols: readonly OutlineSymbol[] = [],
+): DefinitionTarget | null {
   const reference = referenceAt(line, column);
-  return reference ? findBlock(blocks, reference) : null;
+  if (!reference) return null;
+  const block = findBlock(blocks, reference);
+  if (block) return block;
+  if (!('name' in reference) || !reference.name) return null;
+  const name = reference.name.toLowerCase();
+  const symbol = symbols.find((item) => item.name.toLowerCase() === name);
+  return symbol ? { file: symbol.file, line: symbol.line } : null;
 }

@@ -1,22 +1,30 @@
-import { useState } from 'react';
+import { useEffect } from 'react';
 import { useTranslation } from 'react-i18next';
 import { Tabs, type TabDefinition } from '../ui/Tabs';
-import { EyeIcon, ListIcon, TrendIcon } from '../ui/icons';
+import { EyeIcon, ListIcon, StepIcon, TrendIcon } from '../ui/icons';
 import { IoIcon } from '../cpu/cpuIcons';
+import { useMonitor } from '../cpu/SessionContext';
+import { DebugPanel } from './DebugPanel';
 import { WorkbenchDiagnostics, useProblemCount } from './DiagnosticsList';
 import { IoPanel } from './IoPanel';
 import { TrendView } from './TrendView';
 import { WatchTable } from './WatchTable';
+import { usePanelTab } from './panelTab';
 
 import '../styles/monitor.css';
 
-type PanelId = 'diagnostics' | 'watch' | 'trend' | 'io';
+type PanelId = 'diagnostics' | 'watch' | 'trend' | 'io' | 'debug';
 
 /** The panel under the editor: diagnostics, the watch table, the trend view and the I/O panel. */
 export function BottomPanel() {
   const { t } = useTranslation();
-  const [selected, setSelected] = useState<PanelId>('diagnostics');
+  const [selected, setSelected] = usePanelTab<PanelId>('diagnostics');
   const problemCount = useProblemCount();
+  // A hold brings the call stack to the front (a step from one hold to the next does not).
+  const holding = useMonitor((state) => state.hold !== null);
+  useEffect(() => {
+    if (holding) setSelected('debug');
+  }, [holding, setSelected]);
 
   const tabs: TabDefinition<PanelId>[] = [
     {
@@ -37,6 +45,7 @@ export function BottomPanel() {
     { id: 'watch', testId: 'panel-tab-watch', icon: <EyeIcon />, label: t('panels.watch'), panel: <WatchTable /> },
     { id: 'trend', testId: 'panel-tab-trend', icon: <TrendIcon />, label: t('panels.trend'), panel: <TrendView /> },
     { id: 'io', testId: 'panel-tab-io', icon: <IoIcon />, label: t('panels.io'), panel: <IoPanel /> },
+    { id: 'debug', testId: 'panel-tab-debug', icon: <StepIcon />, label: t('debug.panel.tab'), panel: <DebugPanel /> },
   ];
 
   return (

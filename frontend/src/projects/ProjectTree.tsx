@@ -85,7 +85,7 @@ export function ProjectTree() {
     [remove, projectId, setProjectId],
   );
 
-  const treeActions = useTreeActions({ showError: setNotice, selectKey, onProjectDeleted });
+  const treeActions = useTreeActions({ showError: setNotice, selectKey, onProjectDeleted, onProjectRenamed: add });
 
   const actions: TreeRowActions = useMemo(() => {
     const toggle = (row: TreeRow) => {

@@ -89,7 +89,7 @@ export function ProjectTreeBody({ state, rows, labelledBy, selected, actions, on
           openMenu(row, item);
           return true;
         }
-        if (event.key === 'F2' && row.type === 'file') {
+        if (event.key === 'F2' && (row.type === 'file' || row.type === 'project')) {
           actions.rename(row);
           return true;
         }

@@ -19,8 +19,22 @@ interface NameDialogProps {
   testId: string;
 }
 
-/** Asks for a file name (new source, rename, duplicate) and shows the server's refusal. */
-export function FileNameDialog({ title, submitLabel, initialName, onSubmit, onClose, testId }: NameDialogProps) {
+/** What differs between the name of a file and the name of a project. */
+interface NameKind {
+  label: string;
+  hint: string;
+  required: string;
+  maxLength: number;
+  /** File names are Latin-script paths; a project may be named in any script. */
+  dir: 'ltr' | 'auto';
+  /** The part selected when the field gets the focus: a file's stem keeps its suffix. */
+  selectStem: boolean;
+  /** Prefix of the test ids: `<prefix>-input`, `-submit`, `-error`. */
+  ids: string;
+}
+
+/** Asks for a name and shows the server's refusal beside it. */
+function NameDialog({ title, submitLabel, initialName, onSubmit, onClose, testId, kind }: NameDialogProps & { kind: NameKind }) {
   const { t } = useTranslation();
   const errorText = useApiErrorText();
   const ids = useId();
@@ -34,7 +48,7 @@ export function FileNameDialog({ title, submitLabel, initialName, onSubmit, onCl
     if (busy) return;
     const trimmed = name.trim();
     if (!trimmed) {
-      setError({ field: 'name', code: null, text: t('projects.files.nameRequired') });
+      setError({ field: 'name', code: null, text: kind.required });
       inputRef.current?.focus();
       return;
     }
@@ -63,7 +77,7 @@ export function FileNameDialog({ title, submitLabel, initialName, onSubmit, onCl
           <button type="button" className="button" onClick={onClose}>
             {t('common.cancel')}
           </button>
-          <button type="submit" form={`${ids}-form`} className="button button--primary" disabled={busy} data-testid="file-name-submit">
+          <button type="submit" form={`${ids}-form`} className="button button--primary" disabled={busy} data-testid={`${kind.ids}-submit`}>
             {submitLabel}
           </button>
         </>
@@ -72,25 +86,25 @@ export function FileNameDialog({ title, submitLabel, initialName, onSubmit, onCl
       <form id={`${ids}-form`} className="form" onSubmit={submit} noValidate>
         <div className="field">
           <label className="field__label" htmlFor={`${ids}-name`}>
-            {t('projects.files.name')}
+            {kind.label}
           </label>
           <input
             ref={inputRef}
             id={`${ids}-name`}
             className="input"
-            data-testid="file-name-input"
+            data-testid={`${kind.ids}-input`}
             type="text"
-            dir="ltr"
+            dir={kind.dir}
             autoComplete="off"
             spellCheck={false}
-            maxLength={FILE_NAME_MAX}
+            maxLength={kind.maxLength}
             value={name}
             aria-invalid={error ? true : undefined}
             aria-describedby={error ? `${errorId} ${hintId}` : hintId}
             onFocus={(event) => {
-              // Select the stem, so typing replaces the name and keeps the suffix.
-              const dot = event.currentTarget.value.lastIndexOf('.');
-              event.currentTarget.setSelectionRange(0, dot > 0 ? dot : event.currentTarget.value.length);
+              const value = event.currentTarget.value;
+              const dot = kind.selectStem ? value.lastIndexOf('.') : -1;
+              event.currentTarget.setSelectionRange(0, dot > 0 ? dot : value.length);
             }}
             onChange={(event) => {
               setName(event.target.value);
@@ -98,13 +112,43 @@ export function FileNameDialog({ title, submitLabel, initialName, onSubmit, onCl
             }}
           />
           <p id={hintId} className="field__hint">
-            {t('projects.files.nameHint', { max: FILE_NAME_MAX })}
+            {kind.hint}
           </p>
-          {error ? <FieldError id={errorId} error={error} testId="file-name-error" /> : null}
+          {error ? <FieldError id={errorId} error={error} testId={`${kind.ids}-error`} /> : null}
         </div>
       </form>
     </Dialog>
   );
+}
+
+/** Asks for a file name (new source, rename, duplicate). */
+export function FileNameDialog(props: NameDialogProps) {
+  const { t } = useTranslation();
+  const kind: NameKind = {
+    label: t('projects.files.name'),
+    hint: t('projects.files.nameHint', { max: FILE_NAME_MAX }),
+    required: t('projects.files.nameRequired'),
+    maxLength: FILE_NAME_MAX,
+    dir: 'ltr',
+    selectStem: true,
+    ids: 'file-name',
+  };
+  return <NameDialog {...props} kind={kind} />;
+}
+
+/** Asks for a project's new name (unique, letter case aside; at most 64 characters). */
+export function ProjectNameDialog(props: NameDialogProps) {
+  const { t } = useTranslation();
+  const kind: NameKind = {
+    label: t('projects.form.name'),
+    hint: t('projects.form.nameHint', { max: PROJECT_NAME_MAX }),
+    required: t('projects.form.nameRequired'),
+    maxLength: PROJECT_NAME_MAX,
+    dir: 'auto',
+    selectStem: false,
+    ids: 'project-rename',
+  };
+  return <NameDialog {...props} kind={kind} />;
 }
 
 interface ConfirmDialogProps {

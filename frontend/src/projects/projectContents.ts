@@ -46,6 +46,12 @@ function merged(build: ProjectBuild | null, overrides: ReadonlyMap<string, reado
   return [...base, ...[...overrides.values()].flat()];
 }
 
+/** The overrides of files an editor still holds unsaved (the same map when none went). */
+function unsavedOnly(entry: Entry): ReadonlyMap<string, readonly Diagnostic[]> {
+  const kept = [...entry.overrides].filter(([name]) => entry.dirty.has(name));
+  return kept.length === entry.overrides.size ? entry.overrides : new Map(kept);
+}
+
 export interface ProjectContentsStore {
   get: (projectId: number) => ProjectContents | undefined;
   /** Loads the project's files and blocks unless they are loaded or loading. */
@@ -120,7 +126,12 @@ export function createProjectContentsStore(
     return Promise.all([api.listFiles(projectId, request.signal), api.getBlocks(projectId, request.signal)]).then(
       ([files, build]) => {
         if (request.signal.aborted) return;
-        update(projectId, () => ({ build, request: null }), { status: 'ready', files: [...files].sort(byName), error: null });
+        // The build compiled the saved texts: it replaces the own checks of files saved since.
+        update(projectId, (entry) => ({ build, request: null, overrides: unsavedOnly(entry) }), {
+          status: 'ready',
+          files: [...files].sort(byName),
+          error: null,
+        });
       },
       (error: unknown) => {
         if (request.signal.aborted) return;

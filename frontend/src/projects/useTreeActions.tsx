@@ -8,6 +8,7 @@ import {
   duplicateFile,
   exportUrl,
   renameFile,
+  renameProject,
   saveFile,
 } from '../api/client';
 import type { Project } from '../api/types';
@@ -19,7 +20,7 @@ import { fileKey } from './blockFolders';
 import { freeCopyName, freeSourceName, nameTaken, newSourceText } from './fileNames';
 import { projectContents } from './projectContents';
 import type { MenuAction } from './RowMenu';
-import { ConfirmDialog, FileNameDialog } from './TreeDialogs';
+import { ConfirmDialog, FileNameDialog, ProjectNameDialog } from './TreeDialogs';
 import type { TreeRow } from './treeRows';
 
 type TreeDialog =
@@ -27,7 +28,8 @@ type TreeDialog =
   | { kind: 'rename'; projectId: number; name: string }
   | { kind: 'duplicate'; projectId: number; name: string }
   | { kind: 'deleteFile'; projectId: number; name: string }
-  | { kind: 'deleteProject'; project: Project };
+  | { kind: 'deleteProject'; project: Project }
+  | { kind: 'renameProject'; project: Project };
 
 interface TreeActionsOptions {
   /** A problem to show in the tree pane (a file that cannot be opened). */
@@ -35,6 +37,8 @@ interface TreeActionsOptions {
   /** Select (and show) this row: a file just created, renamed or copied. */
   selectKey: (key: string, projectId: number) => void;
   onProjectDeleted: (projectId: number) => void;
+  /** The server renamed the project: its row shows the new name. */
+  onProjectRenamed: (project: Project) => void;
 }
 
 /** The name the server would refuse as taken (API108), said before asking it. */
@@ -54,9 +58,9 @@ function takenError(name: string): ApiError {
  * What can be done to the rows of the project tree (the context menu, Enter, F2, Delete) and the
  * dialogs that ask for names and confirmations.
  */
-export function useTreeActions({ showError, selectKey, onProjectDeleted }: TreeActionsOptions) {
+export function useTreeActions({ showError, selectKey, onProjectDeleted, onProjectRenamed }: TreeActionsOptions) {
   const { t } = useTranslation();
-  const { openSource, renameFileTabs, closeFileTabs } = useEditorTabs();
+  const { openSource, openDb, renameFileTabs, closeFileTabs } = useEditorTabs();
   const openProjectFile = useOpenProjectFile();
   const [dialog, setDialog] = useState<TreeDialog | null>(null);
   const close = useCallback(() => setDialog(null), []);
@@ -90,6 +94,7 @@ export function useTreeActions({ showError, selectKey, onProjectDeleted }: TreeA
 
   const rename = useCallback((row: TreeRow) => {
     if (row.type === 'file') setDialog({ kind: 'rename', projectId: row.projectId, name: row.file.name });
+    else if (row.type === 'project') setDialog({ kind: 'renameProject', project: row.project });
   }, []);
 
   const remove = useCallback((row: TreeRow) => {
@@ -107,6 +112,7 @@ export function useTreeActions({ showError, selectKey, onProjectDeleted }: TreeA
       case 'project':
         return [
           ...creating,
+          { id: 'rename', label: t('shortcuts.renameProject.action'), onSelect: () => rename(row) },
           { id: 'export', label: t('projects.actions.export'), onSelect: () => void exportProject(projectId) },
           { id: 'delete', label: t('projects.actions.deleteProject'), onSelect: () => remove(row), danger: true },
         ];
@@ -123,7 +129,24 @@ export function useTreeActions({ showError, selectKey, onProjectDeleted }: TreeA
           { id: 'delete', label: t('projects.actions.delete'), onSelect: () => remove(row), danger: true },
         ];
       case 'block':
-        return [{ id: 'open', label: t('projects.actions.open'), onSelect: () => activate(row) }, ...creating];
+        return [
+          { id: 'open', label: t('projects.actions.open'), onSelect: () => activate(row) },
+          ...(row.block.kind === 'DB'
+            ? [
+                {
+                  id: 'data-view',
+                  label: t('dbEditor.openDataView'),
+                  onSelect: () =>
+                    openDb({
+                      projectId,
+                      block: `DB${row.block.number}`,
+                      name: `DB${row.block.number}${row.block.name ? ` ${row.block.name}` : ''}`,
+                    }),
+                },
+              ]
+            : []),
+          ...creating,
+        ];
       case 'folder':
         return creating;
       default:
@@ -225,6 +248,23 @@ export function useTreeActions({ showError, selectKey, onProjectDeleted }: TreeA
       >
         <p className="dialog__text">{t('projects.files.deleteText', { name })}</p>
       </ConfirmDialog>
+    );
+  } else if (dialog?.kind === 'renameProject') {
+    const { project } = dialog;
+    element = (
+      <ProjectNameDialog
+        title={t('shortcuts.renameProject.title', { name: project.name })}
+        submitLabel={t('shortcuts.renameProject.submit')}
+        initialName={project.name}
+        testId="project-rename-dialog"
+        onClose={close}
+        onSubmit={async (name) => {
+          // Files, tabs and a running session refer to the project by its id: they carry on.
+          const renamed = name === project.name ? project : await renameProject(project.id, name);
+          close();
+          onProjectRenamed(renamed);
+        }}
+      />
     );
   } else if (dialog?.kind === 'deleteProject') {
     const { project } = dialog;

@@ -328,6 +328,7 @@ def test_a_breakpoint_on_a_line_without_code_is_mon604_naming_the_next_line(
     code = line_of(LOOP_PROGRAM, "L     MW    10")
     error = client.fails("set_breakpoint", "MON604", location={"file": "prog.awl", "line": blank})
     assert f"the next line with code is {code}" in error["message"], error
+    assert error["params"]["next_line"] == code  # for the editor's "move it there"
     assert f"line {blank}" in error["message"]
     # Past the last line with code there is no next line to name.
     last = len(LOOP_PROGRAM.splitlines())

@@ -48,7 +48,9 @@ import 'monaco-editor/editor/contrib/wordOperations/browser/wordOperations';
 import 'monaco-editor/editor/contrib/wordPartOperations/browser/wordPartOperations';
 
 import { SCL_LANGUAGE_ID, sclConfiguration, sclFoldingRanges, sclLanguage } from '../languages/scl';
+import { formatScl } from '../languages/sclFormat';
 import { formatStl } from '../languages/stlFormat';
+import { registerIntellisense } from '../intellisense/register';
 import { STL_LANGUAGE_ID, stlConfiguration, stlFoldingRanges, stlLanguage, type LineRange } from '../languages/stl';
 import { THEME_NAME } from './constants';
 import { nasaqLightTheme } from './theme';
@@ -78,6 +80,16 @@ monaco.languages.registerDocumentFormattingEditProvider(STL_LANGUAGE_ID, {
   },
 });
 register(SCL_LANGUAGE_ID, ['.scl'], sclLanguage, sclConfiguration, sclFoldingRanges);
+// "Format Document" for SCL: the indentation of blocks, sections and statements (sclFormat.ts).
+monaco.languages.registerDocumentFormattingEditProvider(SCL_LANGUAGE_ID, {
+  provideDocumentFormattingEdits: (model) => {
+    const text = model.getValue();
+    const formatted = formatScl(text);
+    return formatted === text ? [] : [{ range: model.getFullModelRange(), text: formatted }];
+  },
+});
+// Completion and hover help for both languages, from the project outline (intellisense/).
+registerIntellisense(monaco);
 monaco.editor.defineTheme(THEME_NAME, nasaqLightTheme);
 
 export { monaco };

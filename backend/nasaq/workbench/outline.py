@@ -1,0 +1,157 @@
+"""A project's outline for the editor's completion, hover help and go to definition: its symbols
+and every block with the members of its interface (a DB: of its data), flattened.
+
+The editor asks for it after every change of a file, next to ``/blocks``, so the outline of the
+same sources is kept (a few projects' worth): a compile takes milliseconds for the examples, but
+a large plant's would be felt on every keystroke's autosave.
+
+The members are the DB editor's rows (``nasaq.workbench.members``, with the line of each
+declaration); the compiler does not keep an SCL declaration's comment, so it is read from that
+line.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import re
+import threading
+from collections import OrderedDict
+from typing import Literal
+
+from pydantic import BaseModel, Field
+
+from nasaq.ir import Program
+from nasaq.lang.stl import SourceFile, compile_sources
+from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES, SymbolTable, read_symbol_table
+from nasaq.workbench.members import Member, block_members
+from nasaq.workbench.names import language_of
+from nasaq.workbench.tree import BLOCK_KINDS, KIND_ORDER, KindName, header_line, header_lines
+
+_COMMENT = re.compile(r"//(.*)$")
+_CACHE_SIZE = 8
+# The temporaries the SCL compiler adds to a block's L stack (``_t1``): not the user's to name.
+_GENERATED = re.compile(r"_t\d+")
+
+
+class OutlineSymbol(BaseModel):
+    name: str
+    address: str = Field(description="As the table writes it, spacing normalised: 'Q 4.0'")
+    type: str
+    comment: str
+    file: str
+    line: int
+
+
+class OutlineBlock(BaseModel):
+    kind: KindName
+    number: int
+    name: str = Field(description="Symbolic name, empty when the block has none")
+    language: Literal["stl", "scl"]
+    file: str
+    line: int | None = Field(description="Line of the block's header")
+    return_type: str | None = Field(description="FCs: the return type ('VOID', 'REAL')")
+    instance_of: str | None = Field(description="Instance DBs: 'FB 10'")
+    members: list[Member] = Field(
+        description="The interface of a code block; the data of a DB (an instance DB's are "
+        "its FB's)"
+    )
+
+
+class ProjectOutline(BaseModel):
+    symbols: list[OutlineSymbol]
+    blocks: list[OutlineBlock]
+
+
+def _with_comment(member: Member, lines: dict[str, list[str]]) -> Member:
+    """SCL declarations' comments are not kept by the compiler: read them from the line."""
+    if member.comment or member.file not in lines or not member.line:
+        return member
+    text = lines[member.file]
+    found = _COMMENT.search(text[member.line - 1]) if member.line <= len(text) else None
+    return member.model_copy(update={"comment": found.group(1).strip()}) if found else member
+
+
+def _blocks(program: Program, texts: dict[str, str]) -> list[OutlineBlock]:
+    headers: dict[str, dict[str, int]] = {}
+    lines = {name: text.splitlines() for name, text in texts.items()}
+    outline: list[OutlineBlock] = []
+    for block in program.blocks.values():
+        language = language_of(block.file)
+        kind = BLOCK_KINDS.get(block.kind)
+        if kind is None or block.file not in texts or language not in ("stl", "scl"):
+            continue  # the IEC library FCs the compiler adds: not the user's blocks
+        if block.file not in headers:
+            headers[block.file] = header_lines(texts[block.file])
+        members = [
+            _with_comment(member, lines)
+            for member in block_members(block, program, texts)
+            if member.line or _GENERATED.fullmatch(member.name) is None
+        ]
+        outline.append(
+            OutlineBlock(
+                kind=kind,
+                number=block.number,
+                name=block.name,
+                language=language,
+                file=block.file,
+                line=header_line(block, headers[block.file]),
+                return_type=block.return_type,
+                instance_of=block.attributes.get("instance_of"),
+                members=members,
+            )
+        )
+    return sorted(outline, key=lambda item: (KIND_ORDER[item.kind], item.number))
+
+
+def _symbols(sources: list[tuple[str, str]]) -> list[OutlineSymbol]:
+    """The symbol tables read again: the program keeps only names, addresses and types."""
+    table = SymbolTable()
+    for name, text in sources:
+        if name.lower().endswith(SYMBOL_TABLE_SUFFIXES):
+            read_symbol_table(name, text, table)
+    return [
+        OutlineSymbol(
+            name=symbol.name,
+            address=symbol.address,
+            type=symbol.type,
+            comment=symbol.comment,
+            file=symbol.file,
+            line=symbol.line,
+        )
+        for symbol in table.symbols.values()
+    ]
+
+
+def _outline(sources: list[tuple[str, str]]) -> ProjectOutline:
+    result = compile_sources(SourceFile(name, text) for name, text in sources)
+    return ProjectOutline(symbols=_symbols(sources), blocks=_blocks(result.program, dict(sources)))
+
+
+_cache: OrderedDict[bytes, ProjectOutline] = OrderedDict()
+_cache_lock = threading.Lock()
+
+
+def _key(sources: list[tuple[str, str]]) -> bytes:
+    digest = hashlib.sha256()
+    for name, text in sorted(sources):
+        for part in (name, text):
+            encoded = part.encode("utf-8", "surrogatepass")
+            digest.update(len(encoded).to_bytes(8, "little"))
+            digest.update(encoded)
+    return digest.digest()
+
+
+def outline(sources: list[tuple[str, str]]) -> ProjectOutline:
+    """The outline of the files, compiled together (or kept from the last time they were the
+    same). Slow for big projects the first time: call it in a thread."""
+    key = _key(sources)
+    with _cache_lock:
+        if key in _cache:
+            _cache.move_to_end(key)
+            return _cache[key]
+    found = _outline(sources)
+    with _cache_lock:
+        _cache[key] = found
+        while len(_cache) > _CACHE_SIZE:
+            _cache.popitem(last=False)
+    return found
