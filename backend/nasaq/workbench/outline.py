@@ -24,8 +24,7 @@ from nasaq.ir import Program
 from nasaq.lang.stl import SourceFile, compile_sources
 from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES, SymbolTable, read_symbol_table
 from nasaq.workbench.members import Member, block_members
-from nasaq.workbench.names import language_of
-from nasaq.workbench.tree import BLOCK_KINDS, KIND_ORDER, KindName, header_line, header_lines
+from nasaq.workbench.tree import KindName, user_blocks
 
 _COMMENT = re.compile(r"//(.*)$")
 _CACHE_SIZE = 8
@@ -72,35 +71,25 @@ def _with_comment(member: Member, lines: dict[str, list[str]]) -> Member:
 
 
 def _blocks(program: Program, texts: dict[str, str]) -> list[OutlineBlock]:
-    headers: dict[str, dict[str, int]] = {}
     lines = {name: text.splitlines() for name, text in texts.items()}
-    outline: list[OutlineBlock] = []
-    for block in program.blocks.values():
-        language = language_of(block.file)
-        kind = BLOCK_KINDS.get(block.kind)
-        if kind is None or block.file not in texts or language not in ("stl", "scl"):
-            continue  # the IEC library FCs the compiler adds: not the user's blocks
-        if block.file not in headers:
-            headers[block.file] = header_lines(texts[block.file])
-        members = [
-            _with_comment(member, lines)
-            for member in block_members(block, program, texts)
-            if member.line or _GENERATED.fullmatch(member.name) is None
-        ]
-        outline.append(
-            OutlineBlock(
-                kind=kind,
-                number=block.number,
-                name=block.name,
-                language=language,
-                file=block.file,
-                line=header_line(block, headers[block.file]),
-                return_type=block.return_type,
-                instance_of=block.attributes.get("instance_of"),
-                members=members,
-            )
+    return [
+        OutlineBlock(
+            kind=entry.kind,
+            number=entry.number,
+            name=entry.name,
+            language=entry.language,
+            file=entry.file,
+            line=entry.line,
+            return_type=block.return_type,
+            instance_of=entry.instance_of,
+            members=[
+                _with_comment(member, lines)
+                for member in block_members(block, program, texts)
+                if member.line or _GENERATED.fullmatch(member.name) is None
+            ],
         )
-    return sorted(outline, key=lambda item: (KIND_ORDER[item.kind], item.number))
+        for block, entry in user_blocks(program.blocks.values(), texts)
+    ]
 
 
 def _symbols(sources: list[tuple[str, str]]) -> list[OutlineSymbol]:

@@ -76,33 +76,34 @@ def header_line(block: Block, headers: dict[str, int]) -> int | None:
     return origins[0].line if origins else None
 
 
-def _tree(blocks: Iterable[Block], texts: dict[str, str]) -> list[TreeBlock]:
+def user_blocks(blocks: Iterable[Block], texts: dict[str, str]) -> list[tuple[Block, TreeBlock]]:
+    """The blocks of the user's files (not the IEC library FCs the compiler adds), each with its
+    entry in the tree, in the tree's order (by kind, then number)."""
     headers: dict[str, dict[str, int]] = {}
-    tree: list[TreeBlock] = []
+    found: list[tuple[Block, TreeBlock]] = []
     for block in blocks:
         language = language_of(block.file)
         kind = BLOCK_KINDS.get(block.kind)
         if kind is None or block.file not in texts or language not in ("stl", "scl"):
-            continue  # the IEC library FCs the compiler adds: not the user's blocks
+            continue
         if block.file not in headers:
             headers[block.file] = header_lines(texts[block.file])
-        tree.append(
-            TreeBlock(
-                kind=kind,
-                number=block.number,
-                name=block.name,
-                title=block.title,
-                language=language,
-                file=block.file,
-                line=header_line(block, headers[block.file]),
-                instance_of=block.attributes.get("instance_of"),
-            )
+        entry = TreeBlock(
+            kind=kind,
+            number=block.number,
+            name=block.name,
+            title=block.title,
+            language=language,
+            file=block.file,
+            line=header_line(block, headers[block.file]),
+            instance_of=block.attributes.get("instance_of"),
         )
-    return sorted(tree, key=lambda item: (KIND_ORDER[item.kind], item.number))
+        found.append((block, entry))
+    return sorted(found, key=lambda pair: (KIND_ORDER[pair[1].kind], pair[1].number))
 
 
 def build(sources: list[tuple[str, str]]) -> ProjectBuild:
     """Compiles the files together. Slow for big projects: call it in a thread."""
     result = compile_sources(SourceFile(name, text) for name, text in sources)
-    blocks = _tree(result.program.blocks.values(), dict(sources))
+    blocks = [entry for _, entry in user_blocks(result.program.blocks.values(), dict(sources))]
     return ProjectBuild(blocks=blocks, diagnostics=result.diagnostics)
