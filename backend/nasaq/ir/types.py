@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import re
+
 ELEMENTARY_BITS: dict[str, int] = {
     "BOOL": 1,
     "BYTE": 8,
@@ -32,3 +34,18 @@ NUMBER_TYPES = frozenset({"TIMER", "COUNTER", "BLOCK_FB", "BLOCK_FC", "BLOCK_DB"
 ACCU_TYPES = frozenset(
     name for name, bits in ELEMENTARY_BITS.items() if bits <= 32 and name not in NUMBER_TYPES
 )
+
+
+_ARRAY = re.compile(r"^ARRAY\s*\[(?P<dims>[^\]]*)\]\s*OF\s+(?P<element>.+)$", re.IGNORECASE)
+_DIM = re.compile(r"^\s*(-?\d+)\s*\.\.\s*(-?\d+)\s*$")
+
+
+def array_shape(type_text: str) -> tuple[list[tuple[int, int]], str] | None:
+    """``ARRAY[1..3, 0..1] OF INT`` → ``([(1, 3), (0, 1)], "INT")``; None for any other type."""
+    match = _ARRAY.match(type_text.strip())
+    if match is None:
+        return None
+    dims = [_DIM.match(part) for part in match["dims"].split(",")]
+    if not all(dims):
+        return None
+    return [(int(dim[1]), int(dim[2])) for dim in dims if dim], match["element"].strip()

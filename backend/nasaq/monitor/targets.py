@@ -42,7 +42,13 @@ from nasaq.headless.addresses import (
     parse_number,
 )
 from nasaq.ir import Area, Block, BlockKind, ConstType, Direct, Program, Variable, Width
-from nasaq.ir.types import ACCU_TYPES, ELEMENTARY_BITS, NUMBER_TYPES, TYPE_ALIASES
+from nasaq.ir.types import (
+    ACCU_TYPES,
+    ELEMENTARY_BITS,
+    NUMBER_TYPES,
+    TYPE_ALIASES,
+    array_shape,
+)
 from nasaq.lang.stl import addresses as stl_addresses
 from nasaq.lang.stl.constants import ConstantError, real_pattern, typed
 from nasaq.monitor.values import Value, decode
@@ -69,8 +75,6 @@ _HEAD = re.compile(r'"(?P<symbol>[^"]+)"|DB\s*(?P<db>\d+)\b|(?P<name>[A-Za-z_]\w
 _SELECTOR = re.compile(
     r'\s*(?:\.\s*(?:"(?P<quoted>[^"]+)"|(?P<name>[A-Za-z_]\w*))|\[(?P<indices>[^\]]*)\])'
 )
-_ARRAY = re.compile(r"^ARRAY\s*\[(?P<dims>[^\]]*)\]\s*OF\s+(?P<element>.+)$", re.IGNORECASE)
-_DIM = re.compile(r"^\s*(-?\d+)\s*\.\.\s*(-?\d+)\s*$")
 _STRING = re.compile(r"^STRING\s*\[\s*(\d+)\s*\]$", re.IGNORECASE)
 # FB IN_OUT parameters of these types hold a pointer to the actual parameter, not its value.
 _BY_REFERENCE = re.compile(r"^(?:ARRAY|STRING|STRUCT|UDT|DATE_AND_TIME$|DT$)", re.IGNORECASE)
@@ -302,7 +306,7 @@ class _Resolver:
     ) -> Variable:
         if parent is None:
             candidates = top
-        elif _array(parent.type) is not None:
+        elif array_shape(parent.type) is not None:
             raise self.error(
                 f"{path} has type {parent.type}: give an index first, e.g. {_first(path, parent)}"
             )
@@ -321,7 +325,7 @@ class _Resolver:
         return found
 
     def element(self, parent: Variable | None, indices: tuple[int, ...], path: str) -> Variable:
-        shape = _array(parent.type) if parent is not None else None
+        shape = array_shape(parent.type) if parent is not None else None
         if parent is None or shape is None:
             what = "is a data block" if parent is None else f"has type {parent.type}"
             raise self.error(f"{path} {what}, not an ARRAY: only an array takes an index")
@@ -376,7 +380,7 @@ class _Resolver:
             offset = variable.offset_bits
             bit = offset % 8 if width is Width.BIT else 0
             return Target(path, kind, Direct(Area.DB, width, offset // 8, bit, db=db))
-        if _array(variable.type) is not None:
+        if array_shape(variable.type) is not None:
             raise self.error(
                 f"{path} has type {variable.type}: add an index, e.g. {_first(path, variable)}"
             )
@@ -439,18 +443,8 @@ def _layout(block: Block, program: Program) -> list[Variable]:
     return [v for v in interface if v.section not in ("TEMP", "RETURN")]
 
 
-def _array(type_text: str) -> tuple[list[tuple[int, int]], str] | None:
-    match = _ARRAY.match(type_text.strip())
-    if match is None:
-        return None
-    dims = [_DIM.match(part) for part in match["dims"].split(",")]
-    if not all(dims):
-        return None
-    return [(int(dim[1]), int(dim[2])) for dim in dims if dim], match["element"].strip()
-
-
 def _first(path: str, array: Variable) -> str:
-    shape = _array(array.type)
+    shape = array_shape(array.type)
     lows = ",".join(str(low) for low, _high in shape[0]) if shape else "1"
     return f"{path}[{lows}]"
 

@@ -25,14 +25,18 @@ from typing import Literal
 from pydantic import BaseModel, Field
 
 from nasaq.ir import Block, BlockKind, Program, Variable
-from nasaq.ir.types import ACCU_TYPES, ELEMENTARY_BITS, NUMBER_TYPES, TYPE_ALIASES
+from nasaq.ir.types import (
+    ACCU_TYPES,
+    ELEMENTARY_BITS,
+    NUMBER_TYPES,
+    TYPE_ALIASES,
+    array_shape,
+)
 from nasaq.workbench.tree import header_line, header_lines
 
 Section = Literal["IN", "OUT", "IN_OUT", "STAT", "TEMP", "RETURN", "DATA"]
 MAX_ELEMENTS = 256  # larger arrays stay one row: a DB editor lists, it does not dump memory
 
-_ARRAY = re.compile(r"^ARRAY\s*\[(?P<dims>[^\]]*)\]\s*OF\s+(?P<element>.+)$", re.IGNORECASE)
-_DIM = re.compile(r"^\s*(-?\d+)\s*\.\.\s*(-?\d+)\s*$")
 _STRING = re.compile(r"^STRING\s*(?:\[\s*(\d+)\s*\])?$", re.IGNORECASE)
 _WATCHABLE = ACCU_TYPES | NUMBER_TYPES  # what a watch table resolves to one value
 _BY_REFERENCE = re.compile(r"^(?:ARRAY|STRING|STRUCT|UDT|DATE_AND_TIME$)")  # IN_OUT: a pointer
@@ -105,7 +109,7 @@ def _rows(
     inner = _Lines(lines.file, None) if kind.startswith("UDT") else lines  # declared elsewhere
     for member in variable.members:
         yield from _rows(member, f"{path}.{member.name}", depth + 1, data, inner, section)
-    shape = _array(variable.type)
+    shape = array_shape(variable.type)
     if shape is not None:
         for row in _elements(variable, shape, path, depth, data, initial, section):
             yield row.model_copy(update={"file": file, "line": line})
@@ -190,16 +194,6 @@ def _initial_texts(initial: object) -> list[str]:
 def _canonical(type_text: str) -> str:
     upper = " ".join(type_text.strip().upper().split())
     return TYPE_ALIASES.get(upper, upper)
-
-
-def _array(type_text: str) -> tuple[list[tuple[int, int]], str] | None:
-    match = _ARRAY.match(type_text.strip())
-    if match is None:
-        return None
-    dims = [_DIM.match(part) for part in match["dims"].split(",")]
-    if not all(dims):
-        return None
-    return [(int(dim[1]), int(dim[2])) for dim in dims if dim], match["element"].strip()
 
 
 def _offset(bits: int) -> str:
