@@ -75,9 +75,9 @@ test('the STL status columns follow the inputs of the motor example', async ({ p
 
   // ACCU values in hexadecimal on request.
   await caretTo(page, assign);
-  await pane.getByTestId('stl-status-format').click();
+  await editor.getByTestId('stl-status-format').click();
   await expect(pane.locator(`.stl-status__row[data-line="${assign}"] [data-column="accu1"]`)).toHaveText(/^16#[0-9A-F]{4}_[0-9A-F]{4}$/);
-  await pane.getByTestId('stl-status-format').click();
+  await editor.getByTestId('stl-status-format').click();
 
   // Monitoring off: the pane goes.
   await toggle.click();
