@@ -74,6 +74,15 @@ def _compile(_settings: Settings, args: argparse.Namespace) -> int:
     return compile_main([Path(source) for source in args.sources], args.emit)
 
 
+def _convert(_settings: Settings, args: argparse.Namespace) -> int:
+    from pathlib import Path
+
+    from nasaq.headless.convert import main as convert_main
+
+    out = Path(args.out) if args.out else None
+    return convert_main(Path(args.source), args.to, out)
+
+
 def _test(_settings: Settings, args: argparse.Namespace) -> int:
     from nasaq.scenarios.report import main as test_main
 
@@ -94,7 +103,7 @@ def build_parser() -> argparse.ArgumentParser:
         "run", help="run STL/SCL sources for N scans and print the final CPU state as JSON"
     )
     run.add_argument(
-        "sources", nargs="+", metavar="SOURCE", help=".awl/.scl sources, symbol tables"
+        "sources", nargs="+", metavar="SOURCE", help=".awl/.scl/.lad/.fbd sources, symbol tables"
     )
     run.add_argument("--cycles", type=int, default=1, help="scans of OB1 to run (after OB100)")
     run.add_argument("--cycle-ms", type=float, default=10.0, help="virtual time per scan")
@@ -143,6 +152,15 @@ def build_parser() -> argparse.ArgumentParser:
         help="stl: print the STL the SCL blocks are compiled to, with their SCL lines",
     )
     compile_.set_defaults(handler=_compile)
+
+    convert = commands.add_parser(
+        "convert",
+        help="convert a source between STL, LAD and FBD (networks without LAD shape stay STL)",
+    )
+    convert.add_argument("source", metavar="SOURCE", help=".awl/.stl, .lad or .fbd source")
+    convert.add_argument("--to", required=True, choices=["stl", "lad", "fbd"])
+    convert.add_argument("--out", metavar="FILE", help="write here instead of standard output")
+    convert.set_defaults(handler=_convert)
 
     test = commands.add_parser("test", help="run scenario files (PLC unit tests)")
     test.add_argument("scenarios", nargs="+", metavar="SCENARIO", help="YAML files or folders")

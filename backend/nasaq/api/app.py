@@ -11,7 +11,17 @@ from fastapi import APIRouter, FastAPI
 from fastapi.middleware.gzip import GZipMiddleware
 
 from nasaq import __version__
-from nasaq.api import archive, files, health, outline, projects, sessions, symbols, workbench
+from nasaq.api import (
+    archive,
+    convert,
+    files,
+    health,
+    outline,
+    projects,
+    sessions,
+    symbols,
+    workbench,
+)
 from nasaq.api.docs import install_docs
 from nasaq.api.errors import install_error_handlers
 from nasaq.api.frontend import install_frontend
@@ -69,6 +79,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     api.include_router(symbols.router)
     api.include_router(outline.router)
     api.include_router(sessions.router)
+    api.include_router(convert.router)
     app.include_router(api)
     install_docs(app)
     install_frontend(app, settings.frontend_dist)  # last: its catch-all route must come after

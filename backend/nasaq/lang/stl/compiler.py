@@ -32,6 +32,7 @@ from nasaq.lang.types import BlockType, StructType, type_text
 
 STL_SUFFIXES = (".awl", ".stl")
 SCL_SUFFIXES = (".scl",)
+LAD_SUFFIXES = (".lad", ".fbd")  # nasaq.lang.lad.text.SUFFIXES
 # A whole-project export of a large plant is a few MB; anything bigger is not an STL source anyone
 # wrote, and the parser (about 7 µs per token) would make the user wait for nothing.
 MAX_SOURCE_CHARS = 4 * 1024 * 1024
@@ -88,9 +89,15 @@ def _code_items(file: _File) -> Iterable[ast.CodeItem]:
 def _language(file: _File, forced: str) -> str:
     if forced in ("de", "en"):
         return forced
+    return mnemonic_set(_code_items(file))
+
+
+def mnemonic_set(items: Iterable[ast.CodeItem]) -> str:
+    """``"de"`` or ``"en"``: the mnemonic set code is written in, by its instructions and the
+    address areas of their operands (``nasaq.lang.stl.mnemonics.detect``)."""
     mnemonics: list[str] = []
     areas: list[str | None] = []
-    for item in _code_items(file):
+    for item in items:
         if not isinstance(item, ast.InstrNode) or item.param_line:
             continue
         mnemonics.append(item.mnemonic.upper())
@@ -125,6 +132,7 @@ class _Compiler:
         self.scl_sources: list[Any] = []  # nasaq.lang.scl.ast.SourceFile
         self.scl_lines: dict[str, list[str]] = {}
         self.generated: list[tuple[str, ast.BlockNode]] = []
+        self.lad_files: dict[str, Any] = {}  # name -> nasaq.lang.lad.compile.LoweredFile
 
     def read(self, sources: list[SourceFile]) -> None:
         for source in sources:
@@ -138,6 +146,9 @@ class _Compiler:
                 continue
             if suffix in SCL_SUFFIXES:
                 self.read_scl(source)
+                continue
+            if suffix in LAD_SUFFIXES:
+                self.read_lad(source)
                 continue
             if suffix not in STL_SUFFIXES:
                 self.diagnostics.append(
@@ -185,6 +196,27 @@ class _Compiler:
             self.diagnostics.append(problem("STL112", source.name, where, file=source.name))
         self.scl_sources.append(parsed.source)
         self.scl_lines[source.name] = text.split("\n")
+
+    def read_lad(self, source: SourceFile) -> None:
+        """A LAD/FBD file is read as the STL its blocks lower to (``nasaq.lang.lad.compile``)."""
+        text = decode(source.text)
+        where = ast.Loc(1, 1, 1, 1)
+        if len(text) > MAX_SOURCE_CHARS:
+            size = {"size_kb": len(text) // 1024, "limit_kb": MAX_SOURCE_CHARS // 1024}
+            self.diagnostics.append(problem("STL111", source.name, where, file=source.name, **size))
+            return
+        from nasaq.lang.lad.compile import lower_file, moved_to_lad  # LAD builds on this package
+
+        lowered = lower_file(source.name, text)
+        self.lad_files[source.name] = lowered
+        self.diagnostics += lowered.diagnostics
+        parsed = parse_source(source.name, lowered.stl)
+        self.diagnostics += [moved_to_lad(found, lowered) for found in parsed.diagnostics]
+        if not parsed.source.blocks and not lowered.diagnostics:
+            self.diagnostics.append(problem("STL112", source.name, where, file=source.name))
+        file = _File(source.name, parsed, lowered.stl.split("\n"))
+        file.language = _language(file, self.mnemonics)
+        self.files.append(file)
 
     def register(self) -> list[tuple[BlockInfo, _File]]:
         registered: list[tuple[BlockInfo, _File]] = []
@@ -399,8 +431,18 @@ def _compile(sources: list[SourceFile], mnemonics: str, test_ops: bool) -> Compi
     compiler.read(sources)
     compiler.diagnostics += compiler.index.diagnostics
     compiler.index.diagnostics = []
+    read = len(compiler.diagnostics)
     registered = compiler.register()
     compiler.build(registered)
     compiler.diagnostics += compiler.index.diagnostics
+    if compiler.lad_files:
+        # What was found in the STL of a LAD file belongs to the LAD file's network.
+        from nasaq.lang.lad.compile import moved_to_lad
+
+        for k in range(read, len(compiler.diagnostics)):
+            span = compiler.diagnostics[k].span
+            lowered = compiler.lad_files.get(span.file or "") if span is not None else None
+            if lowered is not None:
+                compiler.diagnostics[k] = moved_to_lad(compiler.diagnostics[k], lowered)
     diagnostics = sorted(compiler.diagnostics, key=sort_key)
     return CompileResult(compiler.program, diagnostics, compiler.generated)

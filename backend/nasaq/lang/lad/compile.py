@@ -1,0 +1,88 @@
+"""A LAD/FBD file as the STL compiler reads it: the STL its blocks lower to, and where each
+generated line came from.
+
+The STL compiler takes a ``.lad``/``.fbd`` file like an STL source whose text is the lowering of
+its blocks (``to_stl.block_to_stl``), so LAD blocks call and are called by STL and SCL blocks,
+share the symbol table and run on the CPU unchanged. A problem the STL compiler finds in that
+text (an unknown symbol, a wrong operand type) is moved back to the LAD file: to the line of the
+network it belongs to, with the network number, since the generated line means nothing to the
+user.
+"""
+
+from __future__ import annotations
+
+import re
+from bisect import bisect_right
+from dataclasses import dataclass, field
+
+from nasaq.diagnostics import Diagnostic
+from nasaq.lang.lad.text import parse_lad
+from nasaq.lang.lad.to_stl import block_to_stl
+
+_NETWORK = re.compile(r"^[ \t]*NETWORK\b", re.IGNORECASE | re.MULTILINE)
+_BLOCK_START = re.compile(
+    r"^[ \t]*(?:ORGANIZATION_BLOCK|FUNCTION_BLOCK|FUNCTION)\b", re.IGNORECASE | re.MULTILINE
+)
+
+
+@dataclass(slots=True)
+class LoweredFile:
+    """The STL text of a LAD file's blocks, its diagnostics so far, and the line map."""
+
+    stl: str
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    # Generated line (1-based) -> (LAD line, network number or None).
+    origins: list[tuple[int, int | None]] = field(default_factory=list)
+
+    def place(self, line: int) -> tuple[int, int | None]:
+        """The LAD line and network of a generated STL line."""
+        if 1 <= line <= len(self.origins):
+            return self.origins[line - 1]
+        return (1, None)
+
+
+def _starts(pattern: re.Pattern[str], text: str) -> list[int]:
+    return [text.count("\n", 0, match.start()) + 1 for match in pattern.finditer(text)]
+
+
+def lower_file(name: str, text: str) -> LoweredFile:
+    """Parses a LAD/FBD file and lowers every block; a block that does not parse is left out
+    (its problems are in the diagnostics)."""
+    blocks, diagnostics = parse_lad(text, name)
+    lad_blocks = _starts(_BLOCK_START, text)
+    lad_networks = _starts(_NETWORK, text)
+    out: list[str] = []
+    origins: list[tuple[int, int | None]] = []
+    for number, block in enumerate(blocks):
+        stl, problems = block_to_stl(block)
+        for problem in problems:
+            span = problem.span
+            if span is not None and span.file is None:
+                problem = problem.model_copy(
+                    update={"span": span.model_copy(update={"file": name})}
+                )
+            diagnostics.append(problem)
+        block_line = lad_blocks[number] if number < len(lad_blocks) else 1
+        # The LAD header lines of this block's networks, in order.
+        ends = lad_blocks[number + 1] if number + 1 < len(lad_blocks) else len(text) + 1
+        network_lines = [line for line in lad_networks if block_line <= line < ends]
+        lines = stl.rstrip("\n").split("\n")
+        generated = [k for k, line in enumerate(lines) if _NETWORK.match(line)]
+        for k in range(len(lines)):
+            seen = bisect_right(generated, k)  # networks started at or before line k
+            if seen == 0 or seen > len(network_lines):
+                origins.append((block_line, None))
+            else:
+                origins.append((network_lines[seen - 1], seen))
+        out += lines
+    return LoweredFile("\n".join(out) + "\n", diagnostics, origins)
+
+
+def moved_to_lad(diagnostic: Diagnostic, lowered: LoweredFile) -> Diagnostic:
+    """A diagnostic about the generated STL, placed on the LAD file's network instead."""
+    span = diagnostic.span
+    if span is None or span.line is None:
+        return diagnostic
+    line, network = lowered.place(span.line)
+    update = {"line": line, "column": 1, "end_line": line, "end_column": None, "network": network}
+    return diagnostic.model_copy(update={"span": span.model_copy(update=update)})

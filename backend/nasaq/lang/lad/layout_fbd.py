@@ -1,0 +1,248 @@
+"""A layered description of an FBD network, ready for elkjs (``elk.layered``) or direct drawing.
+
+As in STEP 7 FBD, operands are not boxes: an operand (or status bit) is the label of the pin it
+feeds, with ``negated`` for the negation circle. The boxes are nodes with ports (``WEST`` inputs,
+``EAST`` outputs, numbered from the top); wires are edges from an output port to an input port.
+The common logic feeds every output through its own edge (the T-branch).
+
+Layers come from the longest path to an output: final boxes (``=``, ``S``, JMP, boxes ending
+the rung) are in the last layer, a box feeding them one layer to the left, and so on; a box used
+by two outputs sits left of both. Within a layer, nodes are ordered by first visit, walking the
+outputs top-down and each box's inputs top-down, so the same network always gives the same
+layout. A node is two cells wide and as tall as its larger side's port count (at least one).
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict
+
+from nasaq.lang.lad.fbd import (
+    FbdAssign,
+    FbdBox,
+    FbdBranch,
+    FbdEdge,
+    FbdFinal,
+    FbdJump,
+    FbdLogic,
+    FbdMidline,
+    FbdNetwork,
+    FbdNode,
+    FbdOpenDb,
+    FbdOperand,
+    FbdReturn,
+    FbdStatus,
+    flow_pins,
+)
+
+
+class _Frozen(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class FbdPort(_Frozen):
+    """A pin: ``id`` is ``<node>.<side>.<index>``; ``label`` the operand written at it."""
+
+    id: str
+    name: str
+    side: Literal["WEST", "EAST"]
+    index: int
+    label: str | None = None
+    negated: bool = False
+
+
+class FbdLayoutNode(_Frozen):
+    """A box: ``title`` is what is written in it (``&``, ``>=1``, ``S_ODT``, ``=`` ...),
+    ``operand`` what is written above it (the coil's bit, the edge memory, the jump label)."""
+
+    id: str
+    kind: str
+    title: str
+    operand: str | None = None
+    layer: int
+    order: int
+    width: int
+    height: int
+    ports: list[FbdPort]
+
+
+class FbdLayoutEdge(_Frozen):
+    id: str
+    source: str
+    source_port: str
+    target: str
+    target_port: str
+
+
+class FbdLayout(_Frozen):
+    layers: int
+    nodes: list[FbdLayoutNode]
+    edges: list[FbdLayoutEdge]
+
+
+_Box = FbdNode | FbdFinal
+_TITLES = {"AND": "&", "OR": ">=1", "XOR": "XOR"}
+
+
+def _inputs(node: _Box) -> list[tuple[str, str | FbdNode]]:
+    """The node's input pins in drawing order, each with its operand text or feeding node."""
+    if isinstance(node, FbdLogic):
+        return [(f"IN{index + 1}", item) for index, item in enumerate(node.inputs)]
+    if isinstance(node, FbdBox):
+        flow_in = flow_pins(node.name)[0] or "EN"
+        pins = list(node.inputs.items())
+        return pins if node.en is None else [(flow_in, node.en), *pins]
+    if isinstance(node, FbdOperand | FbdStatus | FbdBranch):
+        return []
+    return [("IN", node.input)]
+
+
+def _outputs(node: _Box) -> list[tuple[str, str | None]]:
+    if isinstance(node, FbdBox):
+        flow_out = flow_pins(node.name)[1] or "OUT"
+        pins = [(name, operand) for name, operand in node.outputs.items() if name != flow_out]
+        return [(flow_out, node.outputs.get(flow_out)), *pins]
+    if isinstance(node, FbdAssign | FbdJump | FbdReturn | FbdOpenDb):
+        return []
+    return [("OUT", None)]
+
+
+def _title(node: _Box) -> str:
+    if isinstance(node, FbdLogic):
+        return _TITLES[node.op]
+    if isinstance(node, FbdBox):
+        return node.name if node.instance is None else f"{node.instance} {node.name}"
+    if isinstance(node, FbdAssign):
+        return node.coil
+    if isinstance(node, FbdJump):
+        return "JMPN" if node.negated else "JMP"
+    if isinstance(node, FbdMidline):
+        return "#"
+    if isinstance(node, FbdEdge):
+        return node.edge
+    return {"not": "NOT", "ret": "RET", "opn": "OPN"}.get(node.kind, node.kind)
+
+
+def _operand(node: _Box) -> str | None:
+    """The operand written above the box (the coil's bit, the midline's, the edge memory ...)."""
+    if isinstance(node, FbdAssign | FbdMidline):
+        return node.operand
+    if isinstance(node, FbdEdge):
+        return node.memory
+    if isinstance(node, FbdJump):
+        return node.label
+    if isinstance(node, FbdOpenDb):
+        return node.block
+    return None
+
+
+class _Layering:
+    def __init__(self, fbd: FbdNetwork) -> None:
+        self.logic: FbdNode = fbd.logic
+        self.depth: dict[int, int] = {}
+        self.first: list[_Box] = []
+        self.ids: dict[int, str] = {}
+        self.in_logic: set[int] = set()
+        self._mark(fbd.logic)
+
+    def _mark(self, node: _Box) -> None:
+        self.in_logic.add(id(node))
+        for _, value in _inputs(node):
+            if not isinstance(value, str):
+                self._mark(value)
+
+    def resolve(self, node: str | FbdNode, owner: _Box) -> str | FbdNode:
+        """The node behind a wire: the common logic behind a T-branch (a T-branch inside the
+        common logic itself, which LAD refuses, stays an open pin)."""
+        if isinstance(node, FbdBranch) and id(owner) not in self.in_logic:
+            return self.logic
+        return node
+
+    def visit(self, node: _Box, depth: int) -> None:
+        key = id(node)
+        if key not in self.depth:
+            self.first.append(node)
+            self.ids[key] = self._name(node)
+        elif self.depth[key] >= depth:
+            return
+        self.depth[key] = depth
+        for _, value in _inputs(node):
+            fed = self.resolve(value, node)
+            if not isinstance(fed, str | FbdOperand | FbdStatus | FbdBranch):
+                self.visit(fed, depth + 1)
+
+    def _name(self, node: _Box) -> str:
+        taken = set(self.ids.values())
+        if node.id and node.id not in taken:
+            return node.id
+        count = len(taken)
+        while f"n{count}" in taken:
+            count += 1
+        return f"n{count}"
+
+
+def fbd_layout(fbd: FbdNetwork) -> FbdLayout:
+    """The layered graph of one FBD network (see the module docstring for the rules); none for
+    a network kept as STL."""
+    if fbd.stl is not None:
+        return FbdLayout(layers=0, nodes=[], edges=[])
+    walk = _Layering(fbd)
+    for final in fbd.outputs:
+        walk.visit(final, 0)
+    deepest = max(walk.depth.values())
+    orders: dict[int, int] = {}
+    nodes: list[FbdLayoutNode] = []
+    edges: list[FbdLayoutEdge] = []
+    for node in walk.first:
+        name = walk.ids[id(node)]
+        layer = deepest - walk.depth[id(node)]
+        order = orders.get(layer, 0)
+        orders[layer] = order + 1
+        ports: list[FbdPort] = []
+        for index, (pin, value) in enumerate(_inputs(node)):
+            port = f"{name}.W.{index}"
+            fed = walk.resolve(value, node)
+            if isinstance(fed, str):
+                ports.append(FbdPort(id=port, name=pin, side="WEST", index=index, label=fed))
+            elif isinstance(fed, FbdOperand | FbdStatus):
+                text = fed.operand if isinstance(fed, FbdOperand) else fed.bit
+                ports.append(
+                    FbdPort(
+                        id=port, name=pin, side="WEST", index=index, label=text, negated=fed.negated
+                    )
+                )
+            else:
+                ports.append(FbdPort(id=port, name=pin, side="WEST", index=index))
+                if isinstance(fed, FbdBranch):
+                    continue
+                source = walk.ids[id(fed)]
+                edges.append(
+                    FbdLayoutEdge(
+                        id=f"{source}->{port}",
+                        source=source,
+                        source_port=f"{source}.E.0",
+                        target=name,
+                        target_port=port,
+                    )
+                )
+        outputs = _outputs(node)
+        ports.extend(
+            FbdPort(id=f"{name}.E.{index}", name=pin, side="EAST", index=index, label=label)
+            for index, (pin, label) in enumerate(outputs)
+        )
+        height = max(1, len(ports) - len(outputs), len(outputs))
+        nodes.append(
+            FbdLayoutNode(
+                id=name,
+                kind=node.kind,
+                title=_title(node),
+                operand=_operand(node),
+                layer=layer,
+                order=order,
+                width=2,
+                height=height,
+                ports=ports,
+            )
+        )
+    return FbdLayout(layers=deepest + 1, nodes=nodes, edges=edges)

@@ -1,0 +1,166 @@
+"""STL ↔ LAD ↔ FBD conversion: the module, ``nasaq convert``, ``POST /api/convert``, and LAD
+files compiled with the rest of a program."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from fastapi.testclient import TestClient
+from lad_to_stl_run import get, put, scan
+
+from nasaq.cli import main
+from nasaq.cpu import Cpu
+from nasaq.lang.lad.convert import convert
+from nasaq.lang.lad.text import parse_lad
+from nasaq.lang.stl import SourceFile, compile_sources
+
+MIXED_STL = """\
+FUNCTION FC 5 : VOID
+TITLE = Mixed
+VAR_INPUT
+  Go : BOOL;
+END_VAR
+BEGIN
+NETWORK
+TITLE = Self-holding
+      A(
+      O     I 0.0
+      O     Q 4.0
+      )
+      AN    I 0.1
+      =     Q 4.0
+NETWORK
+TITLE = A value moved
+      L     MW 10
+      T     MW 12
+NETWORK
+TITLE = Exclusive OR
+      A     I 0.3
+      X     I 0.4
+      =     Q 4.2
+END_FUNCTION
+
+ORGANIZATION_BLOCK OB 1
+BEGIN
+NETWORK
+      CALL  FC 5 (Go := I 0.2)
+END_ORGANIZATION_BLOCK
+"""
+
+LAD = """\
+ORGANIZATION_BLOCK OB 1
+BEGIN
+NETWORK
+TITLE = Self-holding
+RUNG
+  PARALLEL
+    BRANCH Contact(I 0.0) END_BRANCH
+    BRANCH Contact(Q 4.0) END_BRANCH
+  END_PARALLEL
+  ContactNC(I 0.1)
+  Coil(Q 4.0)
+END_RUNG
+NETWORK
+RUNG
+  Contact("Missing")
+  Coil(Q 4.1)
+END_RUNG
+END_ORGANIZATION_BLOCK
+"""
+
+
+def test_stl_becomes_lad_network_by_network_and_keeps_the_rest_as_stl() -> None:
+    result = convert("mixed.awl", MIXED_STL, "lad")
+    assert (result.converted, result.kept) == (3, 1)
+    [reason] = result.diagnostics
+    assert reason.code.startswith("LAD3")
+    assert reason.span is not None
+    assert reason.span.line == MIXED_STL.split("\n").index("      X     I 0.4") + 1
+    blocks, problems = parse_lad(result.text, "mixed.lad")
+    assert problems == []
+    fc = blocks[0]
+    assert fc.return_type == "VOID"
+    assert "Go : BOOL;" in fc.declarations
+    assert fc.networks[1].outputs[0].target.kind == "box"  # L/T is a MOVE box
+    kept = fc.networks[2]
+    assert kept.title == "Exclusive OR"
+    assert kept.stl_reason == reason.code == "LAD305"
+    assert kept.stl == "      A     I 0.3\n      X     I 0.4\n      =     Q 4.2"
+
+
+def test_the_converted_program_runs_as_the_stl_did() -> None:
+    lad = convert("mixed.awl", MIXED_STL, "lad").text
+    for sources in ([SourceFile("mixed.awl", MIXED_STL)], [SourceFile("mixed.lad", lad)]):
+        result = compile_sources(sources)
+        assert [d.code for d in result.diagnostics if d.severity == "error"] == []
+        cpu = Cpu(result.program)
+        cpu.start()
+        put(cpu, MW10=1234, I0_0=1)
+        scan(cpu)
+        put(cpu, I0_0=0)
+        scan(cpu)
+        assert get(cpu, "Q 4.0") == 1  # held by its own contact
+        assert get(cpu, "MW 12") == 1234
+        assert get(cpu, "Q 4.2") == 0
+        put(cpu, I0_3=1)
+        scan(cpu)
+        assert get(cpu, "Q 4.2") == 1  # the network kept as STL runs as before
+        put(cpu, I0_1=1)
+        scan(cpu)
+        assert get(cpu, "Q 4.0") == 0
+
+
+def test_lad_and_fbd_are_views_of_the_same_blocks() -> None:
+    fbd = convert("motor.lad", LAD, "fbd")
+    assert "LANGUAGE FBD" in fbd.text
+    back = convert("motor.fbd", fbd.text, "lad")
+    assert parse_lad(back.text, "x.lad")[0] == parse_lad(LAD, "x.lad")[0]
+    stl = convert("motor.lad", LAD, "stl")
+    assert "      AN    I 0.1" in stl.text
+    assert "=     Q 4.0" in stl.text
+
+
+def test_a_lad_file_compiles_with_problems_placed_on_its_network() -> None:
+    result = compile_sources([SourceFile("motor.lad", LAD)])
+    [problem] = [d for d in result.diagnostics if d.severity == "error"]
+    assert problem.span is not None
+    assert (problem.span.file, problem.span.network) == ("motor.lad", 2)
+    assert problem.span.line == LAD.split("\n").index("NETWORK", 10) + 1
+
+
+def test_an_unknown_source_kind_is_refused() -> None:
+    result = convert("plant.scl", "FUNCTION FC 1 : VOID BEGIN END_FUNCTION", "lad")
+    assert [d.code for d in result.diagnostics] == ["LAD501"]
+    assert result.text == ""
+
+
+def test_nasaq_convert(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    source = tmp_path / "mixed.awl"
+    source.write_text(MIXED_STL, encoding="utf-8")
+    out = tmp_path / "mixed.fbd"
+    assert main(["convert", str(source), "--to", "fbd", "--out", str(out)]) == 0
+    assert "LANGUAGE FBD" in out.read_text(encoding="utf-8")
+    assert "3 network(s) converted, 1 kept as STL" in capsys.readouterr().err
+    assert main(["convert", str(out), "--to", "stl"]) == 0
+    assert "CALL  FC 5" in capsys.readouterr().out
+    assert main(["convert", str(tmp_path / "none.awl"), "--to", "lad"]) == 2
+
+
+def test_post_convert(client: TestClient) -> None:
+    response = client.post("/api/convert", json={"name": "m.awl", "text": MIXED_STL, "to": "lad"})
+    assert response.status_code == 200, response.text
+    body = response.json()
+    assert (body["converted"], body["kept"]) == (3, 1)
+    assert body["diagnostics"][0]["severity"] == "info"
+    fc = body["blocks"][0]
+    assert fc["networks"][2]["stl_reason"] == "LAD305"
+    assert fc["networks"][0]["outputs"][0]["target"] == {
+        "id": "e5",
+        "kind": "coil",
+        "coil": "=",
+        "operand": "Q 4.0",
+        "value": None,
+    }
+    refused = client.post("/api/convert", json={"name": "m.awl", "text": "", "to": "ladder"})
+    assert refused.status_code == 422

@@ -1,0 +1,234 @@
+"""The deterministic layouts: every element placed, nothing overlapping, same input same output."""
+
+from __future__ import annotations
+
+import pytest
+from lad_random import RandomNetworks, element_ids
+
+from nasaq.lang.lad.fbd import FbdAssign, FbdBranch, FbdLogic, FbdNetwork, FbdOperand, to_fbd
+from nasaq.lang.lad.layout import LadLayout, fbd_layout, lad_layout
+from nasaq.lang.lad.model import Box, Coil, Contact, Network, Output, Parallel, Series
+
+
+def contact(ident: str, operand: str = "I 0.0") -> Contact:
+    return Contact(id=ident, operand=operand)
+
+
+def cells_of(layout: LadLayout) -> dict[str, tuple[int, int, int, int]]:
+    return {cell.id: (cell.column, cell.row, cell.width, cell.height) for cell in layout.cells}
+
+
+def test_series_parallel_and_stacked_outputs() -> None:
+    network = Network(
+        logic=Series(
+            elements=[
+                contact("a"),
+                Parallel(
+                    id="p",
+                    branches=[
+                        Series(elements=[contact("b"), contact("c")]),
+                        Series(elements=[contact("d")]),
+                    ],
+                ),
+            ]
+        ),
+        outputs=[
+            Output(target=Coil(id="q1", coil="=", operand="Q 4.0")),
+            Output(
+                conditions=Series(elements=[contact("e")]),
+                target=Coil(id="q2", coil="S", operand="Q 4.1"),
+            ),
+        ],
+    )
+    layout = lad_layout(network)
+    assert cells_of(layout) == {
+        "a": (0, 0, 1, 1),
+        "b": (1, 0, 1, 1),
+        "c": (2, 0, 1, 1),
+        "d": (1, 1, 1, 1),
+        "q1": (4, 0, 1, 1),
+        "e": (3, 1, 1, 1),
+        "q2": (4, 1, 1, 1),
+    }
+    assert layout.columns == 5
+    assert layout.rows == 2
+    assert [(link.column, link.from_row, link.to_row) for link in layout.links] == [
+        (1, 0, 1),
+        (3, 0, 1),
+        (3, 0, 1),
+    ]
+    assert [(w.row, w.from_column, w.to_column) for w in layout.wires] == [(1, 2, 3), (0, 3, 4)]
+    (region,) = layout.parallels
+    assert (region.id, region.column, region.row, region.width, region.height) == ("p", 1, 0, 2, 2)
+
+
+def test_box_is_two_cells_wide_and_as_tall_as_its_pins() -> None:
+    timer = Box(
+        id="t",
+        name="S_ODT",
+        instance="T 1",
+        inputs={"TV": "S5T#5S", "R": Series(elements=[contact("r"), contact("s")])},
+        outputs={"BI": "MW 2", "BCD": "MW 4", "Q": "M 3.0"},
+    )
+    network = Network(
+        logic=Series(elements=[contact("a"), timer]),
+        outputs=[Output(target=Coil(id="q", coil="=", operand="Q 4.0"))],
+    )
+    layout = lad_layout(network)
+    cells = cells_of(layout)
+    assert cells["t"] == (3, 0, 2, 3)
+    assert cells["r"] == (1, 2, 1, 1)
+    assert cells["s"] == (2, 2, 1, 1)
+    (box,) = [cell for cell in layout.cells if cell.id == "t"]
+    assert [(p.name, p.side, p.row, p.operand) for p in box.pins] == [
+        ("S", "left", 0, None),
+        ("TV", "left", 1, "S5T#5S"),
+        ("R", "left", 2, None),
+        ("Q", "right", 0, "M 3.0"),
+        ("BI", "right", 1, "MW 2"),
+        ("BCD", "right", 2, "MW 4"),
+    ]
+    assert cells["q"] == (5, 0, 1, 1)
+    assert layout.columns == 6
+    assert layout.rows == 3
+
+
+def test_comparator_and_move_pins() -> None:
+    compare = Box(id="c", name="CMP>=I", inputs={"IN1": "MW 0", "IN2": "MW 2"})
+    move = Box(id="m", name="MOVE", inputs={"IN": "MW 0"}, outputs={"OUT": "MW 4"})
+    network = Network(logic=Series(elements=[compare]), outputs=[Output(target=move)])
+    layout = lad_layout(network)
+    pins = {cell.id: [(p.name, p.side, p.row) for p in cell.pins] for cell in layout.cells}
+    assert pins == {
+        "c": [("IN1", "left", 1), ("IN2", "left", 2)],
+        "m": [("EN", "left", 0), ("IN", "left", 1), ("ENO", "right", 0), ("OUT", "right", 1)],
+    }
+
+
+def occupied(layout: LadLayout) -> list[tuple[str, int, int]]:
+    taken = [
+        (cell.id, cell.column + dx, cell.row + dy)
+        for cell in layout.cells
+        for dx in range(cell.width)
+        for dy in range(cell.height)
+    ]
+    taken += [
+        (f"wire{index}", column, wire.row)
+        for index, wire in enumerate(layout.wires)
+        for column in range(wire.from_column, wire.to_column)
+    ]
+    return taken
+
+
+@pytest.mark.parametrize("seed", range(300))
+def test_lad_layout_places_everything_once_without_overlap(seed: int) -> None:
+    network = RandomNetworks(seed).network()
+    layout = lad_layout(network)
+    assert layout == lad_layout(Network.model_validate_json(network.model_dump_json()))
+    placed = [cell.id for cell in layout.cells] + [region.id for region in layout.parallels]
+    assert sorted(placed) == sorted(element_ids(network))
+    taken = occupied(layout)
+    spots = [(column, row) for _, column, row in taken]
+    assert len(spots) == len(set(spots)), "two things share a cell"
+    assert all(0 <= column < layout.columns and 0 <= row < layout.rows for column, row in spots)
+    targets = {output.target.id for output in network.outputs}
+    for cell in layout.cells:
+        if cell.id in targets:
+            assert cell.column + cell.width == layout.columns, "outputs touch the right rail"
+    for region in layout.parallels:  # a parallel's rectangle holds whole cells or none of them
+        area = {
+            (region.column + dx, region.row + dy)
+            for dx in range(region.width)
+            for dy in range(region.height)
+        }
+        for ident in {ident for ident, _, _ in taken}:
+            cell = {(column, row) for name, column, row in taken if name == ident}
+            assert cell <= area or not cell & area, (region.id, ident)
+    for link in layout.links:
+        assert 0 <= link.from_row <= link.to_row < layout.rows
+        assert 0 <= link.column <= layout.columns
+
+
+@pytest.mark.parametrize("seed", range(200))
+def test_fbd_layout_is_layered_and_complete(seed: int) -> None:
+    network = RandomNetworks(seed).network()
+    view = to_fbd(network)
+    layout = fbd_layout(view)
+    assert layout == fbd_layout(to_fbd(network))
+    nodes = {node.id: node for node in layout.nodes}
+    assert len(nodes) == len(layout.nodes)
+    assert len({(node.layer, node.order) for node in layout.nodes}) == len(layout.nodes)
+    for final in view.outputs:
+        assert nodes[final.id].layer == layout.layers - 1
+    ports = {port.id: (node.id, port) for node in layout.nodes for port in node.ports}
+    for edge in layout.edges:
+        source, out = ports[edge.source_port]
+        target, into = ports[edge.target_port]
+        assert (source, target) == (edge.source, edge.target)
+        assert out.side == "EAST"
+        assert into.side == "WEST"
+        assert nodes[source].layer < nodes[target].layer
+    for node in layout.nodes:
+        west = [port.index for port in node.ports if port.side == "WEST"]
+        east = [port.index for port in node.ports if port.side == "EAST"]
+        assert west == list(range(len(west)))
+        assert east == list(range(len(east)))
+        assert node.height == max(1, len(west), len(east))
+        assert node.width == 2
+    fed = {edge.target_port for edge in layout.edges}
+    for node in layout.nodes:
+        for port in node.ports:
+            if port.side == "WEST":
+                assert (port.id in fed) != (port.label is not None), port
+
+
+def test_fbd_layout_of_a_typical_network() -> None:
+    network = Network(
+        logic=Series(
+            elements=[
+                Parallel(
+                    id="p",
+                    branches=[
+                        Series(elements=[contact("a", "I 0.0")]),
+                        Series(elements=[contact("b", "Q 4.0")]),
+                    ],
+                ),
+                Contact(id="c", operand="I 0.1", negated=True),
+            ]
+        ),
+        outputs=[
+            Output(target=Coil(id="q", coil="=", operand="Q 4.0")),
+            Output(target=Coil(id="m", coil="S", operand="M 0.0")),
+        ],
+    )
+    layout = fbd_layout(to_fbd(network))
+    summary = [(n.id, n.title, n.operand, n.layer, n.order, n.height) for n in layout.nodes]
+    assert summary == [
+        ("q", "=", "Q 4.0", 2, 0, 1),
+        ("&1", "&", None, 1, 0, 2),
+        ("p", ">=1", None, 0, 0, 2),
+        ("m", "S", "M 0.0", 2, 1, 1),
+    ]
+    labels = [(p.name, p.label, p.negated) for p in layout.nodes[1].ports if p.side == "WEST"]
+    assert labels == [("IN1", None, False), ("IN2", "I 0.1", True)]
+    assert [(e.source, e.target) for e in layout.edges] == [("&1", "q"), ("p", "&1"), ("&1", "m")]
+
+
+def test_fbd_layout_of_a_shape_lad_refuses_still_terminates() -> None:
+    looped = FbdLogic(id="L", op="AND", inputs=[FbdBranch(), FbdOperand(operand="I 0.0")])
+    xor = FbdLogic(id="x", op="XOR", inputs=[FbdBranch(), FbdOperand(operand="I 0.1")])
+    view = FbdNetwork(
+        logic=looped, outputs=[FbdAssign(id="q", coil="=", operand="Q 4.0", input=xor)]
+    )
+    layout = fbd_layout(view)
+    assert [(node.id, node.layer) for node in layout.nodes] == [("q", 2), ("x", 1), ("L", 0)]
+    unlabelled = [p.id for n in layout.nodes for p in n.ports if p.side == "WEST" and not p.label]
+    assert sorted(unlabelled) == ["L.W.0", "q.W.0", "x.W.0"]
+    assert [(e.source, e.target) for e in layout.edges] == [("x", "q"), ("L", "x")]
+
+
+def test_a_network_kept_as_stl_has_no_rung_to_lay_out() -> None:
+    kept = Network(stl="      L     MW 10\n      T     MW 12", stl_reason="LAD305")
+    assert lad_layout(kept).cells == []
+    assert lad_layout(kept).columns == 0
+    assert fbd_layout(to_fbd(kept)).nodes == []

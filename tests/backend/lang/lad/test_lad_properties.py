@@ -1,0 +1,292 @@
+"""Properties of random LAD networks (``lad_strategies``): the STL, FBD and text views give the
+same network back, and the network, its STL on the CPU and its FBD compute the same outputs.
+
+The oracle is a Python reading of the tree with LAD's own semantics: a parallel's branches all
+start from the flow into it, every element is evaluated in reading order (no short circuit), a
+midline and an edge write their memory as they are passed. The FBD oracle evaluates the FBD
+graph on its own, so neither view is checked against itself.
+
+Settings are ``derandomize=True``: CI runs the same examples every time (no failure that appears
+once and never again, no example database to carry); the example counts keep the file at a few
+seconds, and widening the search is a matter of raising ``max_examples`` locally.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+from lad_strategies import BITS, COILS, EDGE_MEMORIES, MIDLINES, WORDS, blocks, networks
+
+from nasaq.cpu import Cpu
+from nasaq.headless.addresses import encode_value, parse_address, signed
+from nasaq.ir import Direct
+from nasaq.lang.lad.fbd import (
+    FbdAssign,
+    FbdBox,
+    FbdBranch,
+    FbdEdge,
+    FbdLogic,
+    FbdMidline,
+    FbdNetwork,
+    FbdNode,
+    FbdNot,
+    FbdOperand,
+    from_fbd,
+    to_fbd,
+)
+from nasaq.lang.lad.from_stl import lift_block
+from nasaq.lang.lad.model import (
+    Box,
+    Coil,
+    Contact,
+    EdgeContact,
+    Element,
+    Invert,
+    LadBlock,
+    Midline,
+    Network,
+    Parallel,
+    Series,
+)
+from nasaq.lang.lad.text import number_network, parse_lad, print_lad
+from nasaq.lang.lad.to_stl import block_to_stl
+from nasaq.lang.lad.to_stl_boxes import needs_whole_flow
+from nasaq.lang.stl import SourceFile, compile_sources
+
+State = dict[str, int]
+QUICK = settings(max_examples=150, deadline=None, derandomize=True)
+
+BIT_NAMES = (*BITS, *MIDLINES, *EDGE_MEMORIES, *COILS)
+
+
+def _no_ids(value: Any) -> Any:
+    if isinstance(value, dict):
+        return {k: _no_ids(v) for k, v in value.items() if k != "id"}
+    if isinstance(value, list):
+        return [_no_ids(v) for v in value]
+    return value
+
+
+def shape(network: Network) -> Network:
+    """The network with its ids renumbered and title/comment dropped: what must come back."""
+    data = _no_ids(network.model_dump(exclude={"title", "comment"}))
+    return number_network(Network.model_validate(data))
+
+
+def one_block(network: Network) -> LadBlock:
+    return LadBlock(kind="OB", name="OB 1", networks=[network])
+
+
+def whole_flow_after_start(series: Series, started: bool = False) -> bool:
+    """Whether a parallel holding NOT, an edge or a midline gets flow from elements before it
+    (``to_stl`` then starts each branch from a temporary bit holding that flow)."""
+    for element in series.elements:
+        if isinstance(element, Parallel):
+            if started and needs_whole_flow(element):
+                return True
+            if any(whole_flow_after_start(branch, False) for branch in element.branches):
+                return True
+        started = True
+    return False
+
+
+def whole_flow_in_conditions(network: Network) -> bool:
+    return any(whole_flow_after_start(out.conditions, True) for out in network.outputs)
+
+
+# -- structure ---------------------------------------------------------------------------------
+
+
+@QUICK
+@given(networks(status=True))
+def test_lad_to_stl_to_lad_gives_the_same_network(network: Network) -> None:
+    # Known gap of the lifter (reported): an output condition with such a parallel is read as
+    # a second chain (LAD306). Every other shape must come back.
+    assume(not whole_flow_in_conditions(network))
+    text, problems = block_to_stl(one_block(network))
+    assert problems == [], problems
+    lifted = lift_block(text, "random.awl")
+    assert lifted.diagnostics == [], (lifted.diagnostics, text)
+    [back] = lifted.blocks[0].networks
+    assert isinstance(back, Network), text
+    assert shape(back) == shape(network), text
+
+
+@QUICK
+@given(networks(status=True))
+def test_lad_to_fbd_to_lad_gives_the_same_network(network: Network) -> None:
+    back = from_fbd(to_fbd(network))
+    assert isinstance(back, Network), back
+    assert shape(back) == shape(network)
+
+
+@QUICK
+@given(blocks(status=True), st.sampled_from(["LAD", "FBD"]))
+def test_text_round_trip(block: LadBlock, language: str) -> None:
+    block = block.model_copy(
+        update={"language": language, "networks": [number_network(n) for n in block.networks]}
+    )
+    parsed, problems = parse_lad(print_lad([block]), "random.lad")
+    assert problems == []
+    assert parsed == [block]
+
+
+# -- the oracles -------------------------------------------------------------------------------
+
+
+def _compare(name: str, first: int, second: int) -> bool:
+    op = name.removeprefix("CMP").removesuffix("I")
+    return {
+        "==": first == second,
+        "<>": first != second,
+        ">": first > second,
+        "<": first < second,
+        ">=": first >= second,
+        "<=": first <= second,
+    }[op]
+
+
+def _word(state: Mapping[str, int], operand: str) -> int:
+    return state[operand] if operand in state else int(operand)
+
+
+def _box_value(box: Box | FbdBox, state: State) -> bool:
+    first, second = box.inputs["IN1"], box.inputs["IN2"]
+    assert isinstance(first, str)
+    assert isinstance(second, str)
+    return _compare(box.name, _word(state, first), _word(state, second))
+
+
+def _edge(edge: str, memory: str, flow: bool, state: State) -> bool:
+    before = bool(state[memory])
+    state[memory] = int(flow)
+    return flow and not before if edge == "P" else before and not flow
+
+
+def _coil(kind: str, operand: str, flow: bool, state: State) -> None:
+    if kind == "=":
+        state[operand] = int(flow)
+    elif flow:
+        state[operand] = int(kind == "S")
+
+
+def lad_series(series: Series, flow: bool, state: State) -> bool:
+    for element in series.elements:
+        flow = lad_element(element, flow, state)
+    return flow
+
+
+def lad_element(element: Element, flow: bool, state: State) -> bool:
+    if isinstance(element, Contact):
+        return flow and bool(state[element.operand]) != element.negated
+    if isinstance(element, Box):
+        return _box_value(element, state) and flow
+    if isinstance(element, Parallel):
+        branches = [lad_series(branch, flow, state) for branch in element.branches]
+        return any(branches)
+    if isinstance(element, Invert):
+        return not flow
+    if isinstance(element, EdgeContact):
+        return _edge(element.edge, element.memory, flow, state)
+    assert isinstance(element, Midline), element
+    state[element.operand] = int(flow)
+    return flow
+
+
+def run_lad(network: Network, state: State) -> State:
+    state = dict(state)
+    common = lad_series(network.logic, True, state)
+    for output in network.outputs:
+        flow = lad_series(output.conditions, common, state)
+        assert isinstance(output.target, Coil)
+        _coil(output.target.coil, output.target.operand, flow, state)
+    return state
+
+
+def fbd_node(node: FbdNode, common: bool, state: State) -> bool:
+    if isinstance(node, FbdOperand):
+        return bool(state[node.operand]) != node.negated
+    if isinstance(node, FbdBranch):
+        return common
+    if isinstance(node, FbdLogic):
+        values = [fbd_node(item, common, state) for item in node.inputs]
+        if node.op == "AND":
+            return all(values)
+        if node.op == "OR":
+            return any(values)
+        return sum(values) % 2 == 1
+    if isinstance(node, FbdNot):
+        return not fbd_node(node.input, common, state)
+    if isinstance(node, FbdEdge):
+        return _edge(node.edge, node.memory, fbd_node(node.input, common, state), state)
+    if isinstance(node, FbdMidline):
+        value = fbd_node(node.input, common, state)
+        state[node.operand] = int(value)
+        return value
+    assert isinstance(node, FbdBox), node
+    assert node.en is None, node
+    return _box_value(node, state)
+
+
+def run_fbd(fbd: FbdNetwork, state: State) -> State:
+    state = dict(state)
+    common = fbd_node(fbd.logic, True, state)
+    for output in fbd.outputs:
+        assert isinstance(output, FbdAssign)
+        _coil(output.coil, output.operand, fbd_node(output.input, common, state), state)
+    return state
+
+
+def _where(name: str) -> Direct:
+    found = parse_address(name.replace(" ", ""))
+    assert isinstance(found, Direct)
+    return found
+
+
+def run_cpu(network: Network, state: State) -> State:
+    """One scan of the network's STL on the CPU, started from ``state``."""
+    text, problems = block_to_stl(one_block(network))
+    assert problems == []
+    result = compile_sources([SourceFile("random.awl", text)])
+    assert [d for d in result.diagnostics if d.severity == "error"] == [], text
+    cpu = Cpu(result.program)
+    cpu.start()
+    for name, value in state.items():
+        address = _where(name)
+        if address.area.name == "I":
+            cpu.set_input(address, encode_value(address, value))
+        else:
+            cpu.write(address, encode_value(address, value))
+    cpu.run(1)
+    assert cpu.mode == "RUN", (cpu.stop_reason, text)
+    return {name: signed(cpu.read(_where(name)), _where(name).width) for name in state}
+
+
+def _read_back(state: State) -> State:
+    return {name: abs(value) if name not in WORDS else value for name, value in state.items()}
+
+
+states = st.fixed_dictionaries(
+    {
+        **{name: st.integers(0, 1) for name in BIT_NAMES},
+        **{name: st.integers(-2, 2) for name in WORDS},
+    }
+)
+
+
+@settings(max_examples=150, deadline=None, derandomize=True)
+@given(networks(), states)
+def test_lad_stl_and_fbd_compute_the_same_outputs(network: Network, state: State) -> None:
+    expected = run_lad(network, state)
+    assert _read_back(run_cpu(network, state)) == expected, block_to_stl(one_block(network))[0]
+    fbd = to_fbd(network)
+    # Known disagreement (reported): in FBD a NOT/edge/midline inside such a parallel sees only
+    # its branch, while the STL (as STEP 7 compiles LAD) gives it the whole flow so far.
+    if not (whole_flow_after_start(network.logic) or whole_flow_in_conditions(network)):
+        assert run_fbd(fbd, state) == expected
+    back = from_fbd(fbd)
+    assert isinstance(back, Network)
+    assert _read_back(run_cpu(back, state)) == expected
