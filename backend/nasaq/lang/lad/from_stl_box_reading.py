@@ -248,6 +248,23 @@ class BoxReading(StepCursor, ABC):
         operand = timer.operand
         inputs: dict[str, str | Series] = {"TV": self.value(load)}
         outputs: dict[str, str] = {}
+        slots = self.reset_and_values(operand, inputs, outputs, ("BI", "BCD"))
+        box = Box(name=TIMERS[timer.op], instance=operand, inputs=inputs, outputs=outputs)
+        if self.reload_or_end(c, box, operand):
+            return True
+        if slots == 0:
+            return False
+        raise FinalBoxError(box)
+
+    def reset_and_values(
+        self,
+        operand: str,
+        inputs: dict[str, str | Series],
+        outputs: dict[str, str],
+        value_pins: tuple[str, str],
+    ) -> int:
+        """The R pin and the two value outputs (``L``, ``LC``) a timer or counter box ends with,
+        each a chain or store or an empty ``NOP 0`` slot; how many slots were there."""
         slots = 0
         if self.is_nop(self.peek()):
             self.take()
@@ -255,19 +272,14 @@ class BoxReading(StepCursor, ABC):
         elif (reset := self.slot_chain("R", operand)) is not None:
             inputs["R"] = self.pin(reset)
             slots += 1
-        for load_op, pin in (("L", "BI"), ("LC", "BCD")):
+        for load_op, pin in zip(("L", "LC"), value_pins, strict=True):
             if self.is_nop(self.peek()):
                 self.take()
                 slots += 1
             elif (out := self.load_store(load_op, operand)) is not None:
                 outputs[pin] = out
                 slots += 1
-        box = Box(name=TIMERS[timer.op], instance=operand, inputs=inputs, outputs=outputs)
-        if self.reload_or_end(c, box, operand):
-            return True
-        if slots == 0:
-            return False
-        raise FinalBoxError(box)
+        return slots
 
     def counter_box(self, c: Chain) -> bool:
         first = self.take()
@@ -289,19 +301,7 @@ class BoxReading(StepCursor, ABC):
         elif (preset := self.preset(operand)) is not None:
             inputs["S"], inputs["PV"] = preset
             slots += 1
-        if self.is_nop(self.peek()):
-            self.take()
-            slots += 1
-        elif (reset := self.slot_chain("R", operand)) is not None:
-            inputs["R"] = self.pin(reset)
-            slots += 1
-        for load_op, pin in (("L", "CV"), ("LC", "CV_BCD")):
-            if self.is_nop(self.peek()):
-                self.take()
-                slots += 1
-            elif (out := self.load_store(load_op, operand)) is not None:
-                outputs[pin] = out
-                slots += 1
+        slots += self.reset_and_values(operand, inputs, outputs, ("CV", "CV_BCD"))
         box = Box(name=name, instance=operand, inputs=inputs, outputs=outputs)
         if self.reload_or_end(c, box, operand):
             return True
