@@ -13,7 +13,15 @@ series/parallel tree (``nasaq.lang.lad.model``). Here the tree is turned into bo
   POS/NEG, see ``boxes``) is one input of the AND, like a contact, as STEP 7 draws it;
 * the rung's common part (``Network.logic``) is :attr:`FbdNetwork.logic`; each output is a final
   box (``=``/``S``/``R``/timer/counter coils, JMP/JMPN, RET, OPN or a box) whose input starts
-  from that common wire, :class:`FbdBranch` (the T-branch of STEP 7 FBD).
+  from that common wire, :class:`FbdBranch` (the T-branch of STEP 7 FBD);
+* a parallel after other elements whose branches hold an element acting on the flow (NOT, an
+  edge, a midline, a box with EN ...): every branch starts from the power flow *into* the
+  parallel and the parallel passes the OR of its branches, as in IEC 61131-3 ladder (a
+  parallel is a wired OR of branches fed from one left link) and as ``to_stl`` lowers it
+  (``= #_lad_tN``, then ``A(`` with each branch from ``#_lad_tN``). The flow so far becomes an
+  AND box ``&k``, the OR's ``flow``, and each branch starts from a T-branch of its wire
+  (``FbdBranch(source="&k")``). A parallel of checks only stays ``AND(x, OR(...))``: for it
+  the two readings give the same.
 
 ``to_fbd`` always succeeds. ``from_fbd`` refuses, with a catalogued reason (``LAD401``..), what
 LAD cannot draw: XOR, a box/NOT/edge/midline output entering an AND anywhere but first, a network
@@ -55,6 +63,7 @@ from nasaq.lang.lad.model import (
     StatusBit,
     StatusContact,
 )
+from nasaq.lang.lad.to_stl_boxes import needs_whole_flow
 
 
 class _Node(BaseModel):
@@ -80,11 +89,15 @@ class FbdStatus(_Node):
 
 
 class FbdLogic(_Node):
-    """``AND``, ``OR`` or ``XOR`` (FBD only) of its inputs."""
+    """``AND``, ``OR`` or ``XOR`` (FBD only) of its inputs. An ``OR`` drawing a LAD parallel
+    whose branches act on the flow has ``flow``: the AND box of the power flow into the
+    parallel, which every branch starts from through a T-branch of its wire
+    (``FbdBranch(source=flow.id)``); it is evaluated before the inputs."""
 
     kind: Literal["logic"] = "logic"
     op: Literal["AND", "OR", "XOR"]
     inputs: list[FbdNode] = Field(default_factory=list)
+    flow: FbdNode | None = None
 
 
 class FbdNot(_Node):
@@ -126,10 +139,12 @@ class FbdBox(_Node):
 
 
 class FbdBranch(_Node):
-    """The wire of the network's common logic (:attr:`FbdNetwork.logic`) where an output
-    branches off it."""
+    """A T-branch: the wire of the network's common logic (:attr:`FbdNetwork.logic`) where an
+    output branches off it, or (``source`` set) the wire of the AND box ``source`` that is the
+    ``flow`` of an OR, at the start of each of that OR's branches."""
 
     kind: Literal["branch"] = "branch"
+    source: str = Field(default="", description="The tapped AND box; empty: the common logic")
 
 
 FbdNode = Annotated[
@@ -274,13 +289,25 @@ class _ToFbd:
             elif isinstance(element, StatusContact):
                 terms.append(FbdStatus(id=element.id, bit=element.bit, negated=element.negated))
             elif isinstance(element, Parallel):
-                branches = [self.series(branch) for branch in element.branches]
-                terms.append(FbdLogic(id=element.id, op="OR", inputs=branches))
+                terms = self.parallel(element, terms)
             elif isinstance(element, Box) and not takes_flow(element.name):
                 terms.append(self.box(element, None))
             else:
                 terms = [self.flow_element(element, self.conjunction(terms))]
         return self.conjunction(terms)
+
+    def parallel(self, parallel: Parallel, terms: list[FbdNode]) -> list[FbdNode]:
+        """The terms with the OR box of ``parallel`` added; when its branches act on the flow
+        and something comes before it, the OR replaces the terms: they become its ``flow``."""
+        if not terms or not needs_whole_flow(parallel):
+            branches = [self.series(branch) for branch in parallel.branches]
+            return [*terms, FbdLogic(id=parallel.id, op="OR", inputs=branches)]
+        self._ands += 1
+        flow = FbdLogic(id=f"&{self._ands}", op="AND", inputs=terms)
+        branches = [
+            self.series(branch, FbdBranch(source=flow.id)) for branch in parallel.branches
+        ]
+        return [FbdLogic(id=parallel.id, op="OR", inputs=branches, flow=flow)]
 
     def flow_element(self, element: Element, flow: FbdNode) -> FbdNode:
         if isinstance(element, Invert):
@@ -335,8 +362,14 @@ def _takes_flow(element: Element) -> bool:
     return isinstance(element, Invert | EdgeContact | Midline)
 
 
+_COMMON = ""  # the wire of the network's common logic, as FbdBranch.source names it
+_NO_WIRE: frozenset[str] = frozenset()
+
+
 class _FromFbd:
-    """Reads a node as a LAD series. ``branch`` says whether the common wire may start it."""
+    """Reads a node as a LAD series. ``wires`` are the T-branches that may start the chain:
+    the common wire (``_COMMON``) at the start of an output, an AND box's wire at the start of
+    the branches of the OR that follows that box."""
 
     def __init__(self) -> None:
         self._seen: set[str] = set()
@@ -352,14 +385,14 @@ class _FromFbd:
                 stl_reason=fbd.stl_reason,
             )
         self._final = fbd.logic.id or "logic"
-        _, logic = self.chain(fbd.logic, branch=False)
+        _, logic = self.chain(fbd.logic, _NO_WIRE)
         rail = not logic and isinstance(fbd.logic, FbdLogic)
         outputs = []
         for final in fbd.outputs:
             self.claim(final.id)
             self._final = final.id or "?"
-            starts, conditions = self.chain(self.flow_of(final), branch=True)
-            if not starts and not rail:
+            starts, conditions = self.chain(self.flow_of(final), frozenset({_COMMON}))
+            if starts is None and not rail:
                 raise _NotLadError("LAD403", self._final)
             outputs.append(
                 Output(conditions=Series(elements=conditions), target=self.target(final))
@@ -394,46 +427,46 @@ class _FromFbd:
             return OpenDb(id=final.id, block=final.block)
         return self.box(final)
 
-    def chain(self, node: FbdNode, branch: bool) -> tuple[bool, list[Element]]:
-        """The series ``node`` stands for, and whether it starts at the common wire."""
+    def chain(self, node: FbdNode, wires: frozenset[str]) -> tuple[str | None, list[Element]]:
+        """The series ``node`` stands for, and the T-branch it starts from (None: none)."""
         if isinstance(node, FbdBranch):
-            if not branch:
-                raise _NotLadError("LAD402", node.id or self._final)
-            return True, []
+            if node.source not in wires:
+                if node.source == _COMMON:
+                    raise _NotLadError("LAD402", node.id or self._final)
+                raise _NotLadError("LAD407", node.source, where=node.id or self._final)
+            return node.source, []
         self.claim(node.id)
         if isinstance(node, FbdOperand):
-            return False, [Contact(id=node.id, operand=node.operand, negated=node.negated)]
+            return None, [Contact(id=node.id, operand=node.operand, negated=node.negated)]
         if isinstance(node, FbdStatus):
-            return False, [StatusContact(id=node.id, bit=node.bit, negated=node.negated)]
+            return None, [StatusContact(id=node.id, bit=node.bit, negated=node.negated)]
         if isinstance(node, FbdLogic):
-            return self.logic(node, branch)
+            return self.logic(node, wires)
         if isinstance(node, FbdBox):
             if node.en is None:
-                return False, [self.box(node)]
-            starts, elements = self.chain(node.en, branch)
+                return None, [self.box(node)]
+            starts, elements = self.chain(node.en, wires)
             return starts, [*elements, self.box(node)]
-        starts, elements = self.chain(node.input, branch)
+        starts, elements = self.chain(node.input, wires)
         if isinstance(node, FbdNot):
             return starts, [*elements, Invert(id=node.id)]
         if isinstance(node, FbdEdge):
             return starts, [*elements, EdgeContact(id=node.id, edge=node.edge, memory=node.memory)]
         return starts, [*elements, Midline(id=node.id, operand=node.operand)]
 
-    def logic(self, node: FbdLogic, branch: bool) -> tuple[bool, list[Element]]:
+    def logic(self, node: FbdLogic, wires: frozenset[str]) -> tuple[str | None, list[Element]]:
         if node.op == "XOR":
             raise _NotLadError("LAD401", node.id or "?")
         if node.op == "OR":
-            if not node.inputs:
-                raise _NotLadError("LAD404", node.id or "?")
-            if len(node.inputs) == 1:
-                return self.chain(node.inputs[0], branch)
-            branches = [Series(elements=self.chain(item, False)[1]) for item in node.inputs]
-            return False, [Parallel(id=node.id, branches=branches)]
-        starts, elements = False, []
+            return self.either(node, wires)
+        starts: str | None = None
+        elements: list[Element] = []
         for index, item in enumerate(node.inputs):
-            item_starts, more = self.chain(item, branch and index == 0)
+            item_starts, more = self.chain(item, wires if index == 0 else _NO_WIRE)
             if index == 0:
                 starts = item_starts
+            elif isinstance(item, FbdLogic) and item.flow is not None:
+                raise _NotLadError("LAD405", item.id or "?", box=node.id or "?")
             else:
                 for element in more:
                     if _takes_flow(element):
@@ -441,13 +474,37 @@ class _FromFbd:
             elements.extend(more)
         return starts, elements
 
+    def either(self, node: FbdLogic, wires: frozenset[str]) -> tuple[str | None, list[Element]]:
+        """An OR box: a LAD parallel. With a ``flow``, that flow is the series before the
+        parallel and every branch starts from its wire; without, no branch starts from a wire."""
+        if not node.inputs:
+            raise _NotLadError("LAD404", node.id or "?")
+        starts: str | None = None
+        before: list[Element] = []
+        taps = _NO_WIRE
+        if node.flow is not None:
+            flow = node.flow
+            if not isinstance(flow, FbdLogic) or flow.op != "AND" or not flow.id:
+                raise _NotLadError("LAD407", flow.id or "?", where=node.id or "?")
+            starts, before = self.chain(flow, wires)
+            taps = frozenset({flow.id})
+        elif len(node.inputs) == 1:
+            return self.chain(node.inputs[0], wires)
+        read = [self.chain(item, taps) for item in node.inputs]
+        if taps and any(item_starts is None for item_starts, _ in read):
+            raise _NotLadError("LAD407", next(iter(taps), "?"), where=node.id or "?")
+        branches = [Series(elements=elements) for _, elements in read]
+        if len(branches) == 1:  # a parallel of one branch is that branch
+            return starts, [*before, *branches[0].elements]
+        return starts, [*before, Parallel(id=node.id, branches=branches)]
+
     def box(self, node: FbdBox) -> Box:
         inputs: dict[str, str | Series] = {}
         for pin, value in node.inputs.items():
             if isinstance(value, str):
                 inputs[pin] = value
             else:
-                inputs[pin] = Series(elements=self.chain(value, False)[1])
+                inputs[pin] = Series(elements=self.chain(value, _NO_WIRE)[1])
         return Box(
             id=node.id,
             name=node.name,

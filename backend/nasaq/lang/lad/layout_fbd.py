@@ -3,7 +3,9 @@
 As in STEP 7 FBD, operands are not boxes: an operand (or status bit) is the label of the pin it
 feeds, with ``negated`` for the negation circle. The boxes are nodes with ports (``WEST`` inputs,
 ``EAST`` outputs, numbered from the top); wires are edges from an output port to an input port.
-The common logic feeds every output through its own edge (the T-branch).
+The common logic feeds every output through its own edge (the T-branch); the ``flow`` of an
+OR box (the AND box of the power flow into a LAD parallel) feeds the first pin of each of its
+branches through its own edge too.
 
 Layers come from the longest path to an output: final boxes (``=``, ``S``, JMP, boxes ending
 the rung) are in the last layer, a box feeding them one layer to the left, and so on; a box used
@@ -144,19 +146,33 @@ class _Layering:
         self.first: list[_Box] = []
         self.ids: dict[int, str] = {}
         self.in_logic: set[int] = set()
-        self._mark(fbd.logic)
+        self.ands: dict[str, FbdLogic] = {}
+        self.path: set[int] = set()
+        self.loops: set[tuple[int, int]] = set()
+        self._mark(fbd.logic, self.in_logic)
+        for final in fbd.outputs:
+            self._mark(final, set())
 
-    def _mark(self, node: _Box) -> None:
-        self.in_logic.add(id(node))
+    def _mark(self, node: _Box, seen: set[int]) -> None:
+        seen.add(id(node))
+        if isinstance(node, FbdLogic):
+            if node.op == "AND" and node.id:
+                self.ands.setdefault(node.id, node)
+            if node.flow is not None:
+                self._mark(node.flow, seen)
         for _, value in _inputs(node):
             if not isinstance(value, str):
-                self._mark(value)
+                self._mark(value, seen)
 
     def resolve(self, node: str | FbdNode, owner: _Box) -> str | FbdNode:
-        """The node behind a wire: the common logic behind a T-branch (a T-branch inside the
-        common logic itself, which LAD refuses, stays an open pin)."""
-        if isinstance(node, FbdBranch) and id(owner) not in self.in_logic:
-            return self.logic
+        """The node behind a wire: the common logic behind a T-branch, the AND box behind a
+        tap of its wire (a T-branch inside the common logic itself, or a tap of a box that is
+        not there, which LAD refuses, stays an open pin)."""
+        if isinstance(node, FbdBranch):
+            if node.source:
+                return self.ands.get(node.source, node)
+            if id(owner) not in self.in_logic:
+                return self.logic
         return node
 
     def visit(self, node: _Box, depth: int) -> None:
@@ -167,10 +183,16 @@ class _Layering:
         elif self.depth[key] >= depth:
             return
         self.depth[key] = depth
+        self.path.add(key)
         for _, value in _inputs(node):
             fed = self.resolve(value, node)
-            if not isinstance(fed, str | FbdOperand | FbdStatus | FbdBranch):
-                self.visit(fed, depth + 1)
+            if isinstance(fed, str | FbdOperand | FbdStatus | FbdBranch):
+                continue
+            if id(fed) in self.path:  # a box tapping its own wire (no LAD): an open pin
+                self.loops.add((key, id(value)))
+                continue
+            self.visit(fed, depth + 1)
+        self.path.discard(key)
 
     def _name(self, node: _Box) -> str:
         taken = set(self.ids.values())
@@ -214,7 +236,7 @@ def fbd_layout(fbd: FbdNetwork) -> FbdLayout:
                 )
             else:
                 ports.append(FbdPort(id=port, name=pin, side="WEST", index=index))
-                if isinstance(fed, FbdBranch):
+                if isinstance(fed, FbdBranch) or (id(node), id(value)) in walk.loops:
                     continue
                 source = walk.ids[id(fed)]
                 edges.append(

@@ -290,20 +290,29 @@ def lad_value(series: Series, values: dict[str, bool], flow: bool = True) -> boo
             flow = not flow
         else:
             assert isinstance(element, Parallel)
-            flow = flow and any(lad_value(branch, values) for branch in element.branches)
+            flow = any(lad_value(branch, values, flow) for branch in element.branches)
     return flow
 
 
-def fbd_value(node: FbdNode, values: dict[str, bool], common: bool) -> bool:
+def fbd_value(
+    node: FbdNode, values: dict[str, bool], common: bool, wires: dict[str, bool] | None = None
+) -> bool:
+    """The node's value; ``wires`` keeps the value of each AND box for the taps of its wire
+    (an OR's ``flow`` is evaluated before its inputs, which tap it)."""
+    wires = {} if wires is None else wires
     if isinstance(node, FbdOperand):
         return values[node.operand] != node.negated
     if isinstance(node, FbdBranch):
-        return common
+        return wires[node.source] if node.source else common
     if isinstance(node, FbdNot):
-        return not fbd_value(node.input, values, common)
+        return not fbd_value(node.input, values, common, wires)
     assert isinstance(node, FbdLogic)
-    results = [fbd_value(item, values, common) for item in node.inputs]
-    return all(results) if node.op == "AND" else any(results)
+    if node.flow is not None:
+        fbd_value(node.flow, values, common, wires)
+    results = [fbd_value(item, values, common, wires) for item in node.inputs]
+    value = all(results) if node.op == "AND" else any(results)
+    wires[node.id] = value
+    return value
 
 
 @pytest.mark.parametrize("seed", range(60))
