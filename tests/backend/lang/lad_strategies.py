@@ -1,10 +1,11 @@
 """Hypothesis strategies for LAD networks that STEP 7 could draw and lower to STL.
 
 Every rung and branch starts with something that reads a value (a contact, a status contact, a
-compare box or a parallel): NOT, edges and midlines act on the flow before them, so a branch
-cannot start with one. Operands come from small pools, so that contacts repeat and compares hit
-equality often; midlines, edge memories and coils have pools of their own that no contact reads,
-which keeps the Python oracle of the tests simple (a midline never changes a later contact).
+compare box or a parallel): NOT, edges, midlines and EN/ENO boxes (MOVE, ADD_I) act on the flow
+before them, so a branch cannot start with one. Operands come from small pools, so that contacts
+repeat and compares hit equality often; midlines, edge memories, coils and box results have
+pools of their own that no contact reads, which keeps the Python oracle of the tests simple (a
+midline never changes a later contact).
 
 ``lad_random`` stays beside this module: it draws *any* model shape (empty branches, NOT first,
 jumps, OPN, timer boxes with logic pins) for the views that must show whatever a file holds;
@@ -36,6 +37,7 @@ WORDS = ("MW 10", "MW 12")
 MIDLINES = ("M 2.0", "M 2.1")
 EDGE_MEMORIES = ("M 3.0", "M 3.1")
 COILS = ("Q 4.0", "Q 4.1", "M 5.0")
+RESULTS = ("MW 14", "MW 16")  # what MOVE and ADD_I boxes write; no contact or compare reads them
 COMPARES = ("==I", "<>I", ">I", "<I", ">=I", "<=I")
 STATUS_BITS = ("OV", "BR", "==0", "<>0", ">=0", "<0")
 
@@ -59,14 +61,34 @@ def status_contacts() -> st.SearchStrategy[Element]:
     return st.builds(StatusContact, bit=st.sampled_from(STATUS_BITS), negated=st.booleans())
 
 
+def en_boxes() -> st.SearchStrategy[Element]:
+    """MOVE and ADD_I boxes in the rung: EN is the flow into them, ENO the flow out (small
+    words never overflow, so ENO is EN)."""
+    move = st.builds(
+        lambda source, target: Box(name="MOVE", inputs={"IN": source}, outputs={"OUT": target}),
+        st.sampled_from(WORDS),
+        st.sampled_from(RESULTS),
+    )
+    add = st.builds(
+        lambda first, second, target: Box(
+            name="ADD_I", inputs={"IN1": first, "IN2": second}, outputs={"OUT": target}
+        ),
+        st.sampled_from(WORDS),
+        st.one_of(st.sampled_from(WORDS), st.integers(-2, 2).map(str)),
+        st.sampled_from(RESULTS),
+    )
+    return st.one_of(move, add)
+
+
 def flow_elements() -> st.SearchStrategy[Element]:
-    """Elements that act on the flow before them: NOT, edges, midlines."""
+    """Elements that act on the flow before them: NOT, edges, midlines, EN/ENO boxes."""
     return st.one_of(
         st.just(Invert()),
         st.builds(
             EdgeContact, edge=st.sampled_from(["P", "N"]), memory=st.sampled_from(EDGE_MEMORIES)
         ),
         st.builds(Midline, operand=st.sampled_from(MIDLINES)),
+        en_boxes(),
     )
 
 

@@ -304,9 +304,7 @@ class _ToFbd:
             return [*terms, FbdLogic(id=parallel.id, op="OR", inputs=branches)]
         self._ands += 1
         flow = FbdLogic(id=f"&{self._ands}", op="AND", inputs=terms)
-        branches = [
-            self.series(branch, FbdBranch(source=flow.id)) for branch in parallel.branches
-        ]
+        branches = [self.series(branch, FbdBranch(source=flow.id)) for branch in parallel.branches]
         return [FbdLogic(id=parallel.id, op="OR", inputs=branches, flow=flow)]
 
     def flow_element(self, element: Element, flow: FbdNode) -> FbdNode:

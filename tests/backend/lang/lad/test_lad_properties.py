@@ -18,7 +18,16 @@ from typing import Any
 
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
-from lad_strategies import BITS, COILS, EDGE_MEMORIES, MIDLINES, WORDS, blocks, networks
+from lad_strategies import (
+    BITS,
+    COILS,
+    EDGE_MEMORIES,
+    MIDLINES,
+    RESULTS,
+    WORDS,
+    blocks,
+    networks,
+)
 
 from nasaq.cpu import Cpu
 from nasaq.headless.addresses import encode_value, parse_address, signed
@@ -139,6 +148,17 @@ def _box_value(box: Box | FbdBox, state: State) -> bool:
     return _compare(box.name, _word(state, first), _word(state, second))
 
 
+def _en_box(box: Box | FbdBox, enabled: bool, state: State) -> bool:
+    """MOVE / ADD_I: writes OUT when enabled; ENO is EN (the words are too small to overflow)."""
+    if enabled:
+        if box.name == "MOVE":
+            value = _word(state, str(box.inputs["IN"]))
+        else:
+            value = _word(state, str(box.inputs["IN1"])) + _word(state, str(box.inputs["IN2"]))
+        state[box.outputs["OUT"]] = value
+    return enabled
+
+
 def _edge(edge: str, memory: str, flow: bool, state: State) -> bool:
     before = bool(state[memory])
     state[memory] = int(flow)
@@ -162,6 +182,8 @@ def lad_element(element: Element, flow: bool, state: State) -> bool:
     if isinstance(element, Contact):
         return flow and bool(state[element.operand]) != element.negated
     if isinstance(element, Box):
+        if element.name in ("MOVE", "ADD_I"):
+            return _en_box(element, flow, state)
         return _box_value(element, state) and flow
     if isinstance(element, Parallel):
         branches = [lad_series(branch, flow, state) for branch in element.branches]
@@ -219,7 +241,8 @@ class FbdRun:
             state[node.operand] = int(value)
             return value
         assert isinstance(node, FbdBox), node
-        assert node.en is None, node
+        if node.en is not None:
+            return _en_box(node, self.node(node.en), state)
         return _box_value(node, state)
 
 
@@ -276,13 +299,14 @@ def run_cpu(network: Network, state: State) -> State:
 
 
 def _read_back(state: State) -> State:
-    return {name: abs(value) if name not in WORDS else value for name, value in state.items()}
+    words = (*WORDS, *RESULTS)
+    return {name: abs(value) if name not in words else value for name, value in state.items()}
 
 
 states = st.fixed_dictionaries(
     {
         **{name: st.integers(0, 1) for name in BIT_NAMES},
-        **{name: st.integers(-2, 2) for name in WORDS},
+        **{name: st.integers(-2, 2) for name in (*WORDS, *RESULTS)},
     }
 )
 
