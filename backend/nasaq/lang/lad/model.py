@@ -104,7 +104,10 @@ class Box(_Element):
 
 
 class Parallel(_Element):
-    """Branches side by side (OR): the flow passes when it passes any branch."""
+    """Branches side by side (OR): every branch starts from the power flow into the parallel,
+    and the flow passes when it passes any branch (a wired OR, as in IEC 61131-3 ladder). An
+    element in a branch sees the flow at its position: a NOT after ``a`` in a branch gives
+    NOT(flow into the parallel AND a)."""
 
     kind: Literal["parallel"] = "parallel"
     branches: list[Series] = Field(min_length=2)
