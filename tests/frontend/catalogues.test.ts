@@ -7,6 +7,7 @@ import {
   matchLanguage,
   nativeNameOf,
 } from '../../frontend/src/i18n/languages';
+import { createI18n } from '../../frontend/src/i18n/setup';
 
 type Tree = { [key: string]: string | Tree };
 
@@ -67,6 +68,7 @@ describe('translation catalogues', () => {
         'problems.invalid_request',
         'problems.mon_bad_value',
         'problems.mon_unknown_target',
+        'problemWords.NOT',
       ].sort(),
     );
   });
@@ -122,5 +124,16 @@ describe('initial language', () => {
     expect(matchLanguage('vi_VN')).toBe('vi');
     expect(matchLanguage('arn')).toBeNull();
     expect(matchLanguage('')).toBeNull();
+  });
+
+  it.each(['ar', 'fa', 'vi'] as const)('%s nests the translated word a LAD problem names', (lang) => {
+    const i18n = createI18n(lang);
+    const params = { network: 2, element: 'b1', coil: 'SD', what: 'value' };
+    const text = i18n.t('problems.lad_coil_incomplete', params);
+    expect(text).toContain(flat[lang].get('problemWords.value'));
+    expect(text).not.toMatch(/value|\$t\(/);
+    expect(i18n.t('problems.lad_needs_flow', { ...params, what: 'midline' })).toContain(
+      flat[lang].get('problemWords.midline'),
+    );
   });
 });

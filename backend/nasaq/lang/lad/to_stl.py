@@ -134,7 +134,8 @@ class NetworkLowering:
         if isinstance(element, Box):
             return lower_box(self, element, started, in_chain=True)
         if not started:
-            self.report("LAD205", element.id, what=element.kind)
+            what = "NOT" if isinstance(element, Invert) else element.kind  # a problemWords key
+            self.report("LAD205", element.id, what=what)
             return started
         if isinstance(element, Invert):
             self.emit("NOT")

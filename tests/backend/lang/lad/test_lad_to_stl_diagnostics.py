@@ -3,6 +3,9 @@ exception, and the rest of the block still lowers."""
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 import pytest
 from lad_to_stl_run import c, coil, net, ob1, par, s
 
@@ -71,6 +74,34 @@ def ends(target: Box | Coil | OpenDb) -> list[Output]:
 )
 def test_problem_has_code_network_and_element(network: Network, code: str) -> None:
     assert problems(network) == [(code, 2, "b1")]
+
+
+LOCALES = Path(__file__).resolve().parents[4] / "frontend" / "src" / "i18n" / "locales"
+
+
+@pytest.mark.parametrize("language", ["en", "ar", "fa", "vi"])
+def test_every_word_a_problem_names_is_translated(language: str) -> None:
+    """``what`` in LAD205/LAD208/LAD210 is a key of ``problemWords``, which the messages nest
+    (``$t(problemWords.{{what}})``), so no English word shows in a translated message."""
+    words = json.loads((LOCALES / f"{language}.json").read_text("utf-8"))["problemWords"]
+    networks = [
+        net(Invert(id="b1")),
+        net(Midline(id="b1", operand="M 0.0")),
+        net(par(s(EdgeContact(id="b1", edge="P", memory="M 0.0")), c("I 0.0"))),
+        net(c("I 0.0"), outputs=ends(Coil(id="b1", coil="SD", operand="T 1"))),
+        net(c("I 0.0"), outputs=ends(Coil(id="b1", coil="="))),
+        *(
+            net(Box(id="b1", name=name))
+            for name, spec in sorted(CATALOGUE.items())
+            if spec.address is not None
+        ),
+    ]
+    said = set()
+    for network in networks:
+        _, diagnostics = block_to_stl(ob1(network))
+        said |= {d.params["what"] for d in diagnostics if "what" in d.params}
+    assert said == {"NOT", "midline", "edge", "value", "operand", "timer", "counter", "bit"}
+    assert said <= set(words), said - set(words)
 
 
 def test_empty_branch_is_a_short_circuit() -> None:
