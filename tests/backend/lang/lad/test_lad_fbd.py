@@ -136,6 +136,64 @@ def test_not_edge_midline_and_box_take_the_flow_so_far() -> None:
     assert from_fbd(to_fbd(network)) == network
 
 
+def test_a_parallel_acting_on_the_flow_is_an_or_fed_by_the_flow_into_it() -> None:
+    """``x`` then (``y`` MOVE | ``z``): each branch starts from ``x`` (the MOVE does not run
+    while ``x`` is open), so the OR's ``flow`` is an AND box of ``x`` whose wire starts each
+    branch; what follows the parallel is ANDed after the OR, nothing before it."""
+    move = Box(id="mv", name="MOVE", inputs={"IN": "MW 0"}, outputs={"OUT": "MW 2"})
+    branches = [
+        Series(elements=[contact("y", "I 0.1"), move]),
+        Series(elements=[contact("z", "I 0.2")]),
+    ]
+    network = rung(
+        contact("x", "I 0.0"), Parallel(id="p", branches=branches), contact("w", "I 0.3")
+    )
+    logic = to_fbd(network).logic
+    flow = FbdLogic(id="&1", op="AND", inputs=[op("I 0.0", ident="x")])
+    tap = FbdBranch(source="&1")
+    first = FbdBox(
+        id="mv",
+        name="MOVE",
+        en=FbdLogic(id="&2", op="AND", inputs=[tap, op("I 0.1", ident="y")]),
+        inputs={"IN": "MW 0"},
+        outputs={"OUT": "MW 2"},
+    )
+    second = FbdLogic(id="&3", op="AND", inputs=[tap, op("I 0.2", ident="z")])
+    either = FbdLogic(id="p", op="OR", inputs=[first, second], flow=flow)
+    assert logic == FbdLogic(id="&4", op="AND", inputs=[either, op("I 0.3", ident="w")])
+    assert from_fbd(to_fbd(network)) == network
+
+
+def test_a_parallel_of_checks_keeps_the_plain_and_of_or() -> None:
+    branches = [Series(elements=[contact("y", "I 0.1")]), Series(elements=[contact("z", "I 0.2")])]
+    logic = to_fbd(rung(contact("x", "I 0.0"), Parallel(id="p", branches=branches))).logic
+    assert isinstance(logic, FbdLogic)
+    assert [item.kind for item in logic.inputs] == ["operand", "logic"]
+    assert all(item.flow is None for item in logic.inputs if isinstance(item, FbdLogic))
+
+
+def test_a_tapped_wire_only_where_lad_has_a_parallel_from_it() -> None:
+    flow = FbdLogic(id="&9", op="AND", inputs=[op("a")])
+    tap = FbdBranch(source="&9")
+    # a tap outside the OR whose flow the box is
+    stray = FbdLogic(op="AND", inputs=[flow, FbdNot(id="n", input=tap)])
+    refusal(fbd(stray), "LAD407", "&9")
+    # one branch starts from the wire, the other does not
+    mixed = FbdLogic(
+        id="o", op="OR", flow=flow, inputs=[FbdLogic(op="AND", inputs=[tap, op("b")]), op("c")]
+    )
+    refusal(fbd(mixed), "LAD407", "&9")
+    # the flow is not an AND box with an id
+    odd = FbdLogic(id="o", op="OR", flow=op("a", ident="a1"), inputs=[op("b"), op("c")])
+    refusal(fbd(odd), "LAD407", "a1")
+    # such an OR after other inputs of an AND: its branches would not see those
+    good = FbdLogic(
+        id="o", op="OR", flow=flow, inputs=[tap, FbdLogic(op="AND", inputs=[tap, op("b")])]
+    )
+    refusal(fbd(FbdLogic(id="and", op="AND", inputs=[op("c"), good])), "LAD405", "o")
+    assert isinstance(from_fbd(fbd(good)), Network)
+
+
 def test_a_comparator_is_one_input_of_the_and_as_step7_draws_it() -> None:
     compare = Box(id="c", name="CMP>=I", inputs={"IN1": "MW 0", "IN2": "MW 2"})
     network = rung(contact("a", "I 0.0"), compare, contact("b", "I 0.1"))
@@ -265,7 +323,7 @@ def test_a_duplicate_id_is_refused() -> None:
 
 
 def test_codes_are_catalogued_in_the_range() -> None:
-    for number in range(401, 407):
+    for number in range(401, 408):
         assert entry(f"LAD{number}").key.startswith("lad_fbd_")
 
 

@@ -7,7 +7,7 @@ from lad_random import RandomNetworks, element_ids
 
 from nasaq.lang.lad.fbd import FbdAssign, FbdBranch, FbdLogic, FbdNetwork, FbdOperand, to_fbd
 from nasaq.lang.lad.layout import LadLayout, fbd_layout, lad_layout
-from nasaq.lang.lad.model import Box, Coil, Contact, Network, Output, Parallel, Series
+from nasaq.lang.lad.model import Box, Coil, Contact, Invert, Network, Output, Parallel, Series
 
 
 def contact(ident: str, operand: str = "I 0.0") -> Contact:
@@ -212,6 +212,43 @@ def test_fbd_layout_of_a_typical_network() -> None:
     labels = [(p.name, p.label, p.negated) for p in layout.nodes[1].ports if p.side == "WEST"]
     assert labels == [("IN1", None, False), ("IN2", "I 0.1", True)]
     assert [(e.source, e.target) for e in layout.edges] == [("&1", "q"), ("p", "&1"), ("&1", "m")]
+
+
+def test_fbd_layout_draws_the_flow_into_a_parallel_as_a_wire_to_every_branch() -> None:
+    branches = [
+        Series(elements=[contact("y", "I 0.1"), Invert(id="n")]),
+        Series(elements=[contact("z", "I 0.2")]),
+    ]
+    network = Network(
+        logic=Series(elements=[contact("x"), Parallel(id="p", branches=branches)]),
+        outputs=[Output(target=Coil(id="q", coil="=", operand="Q 4.0"))],
+    )
+    layout = fbd_layout(to_fbd(network))
+    assert [(n.id, n.title, n.layer) for n in layout.nodes] == [
+        ("q", "=", 4),
+        ("p", ">=1", 3),
+        ("n", "NOT", 2),
+        ("&2", "&", 1),
+        ("&1", "&", 0),
+        ("&3", "&", 2),
+    ]
+    assert [(e.source, e.target_port) for e in layout.edges] == [
+        ("p", "q.W.0"),
+        ("n", "p.W.0"),
+        ("&3", "p.W.1"),
+        ("&2", "n.W.0"),
+        ("&1", "&2.W.0"),
+        ("&1", "&3.W.0"),
+    ]
+
+
+def test_fbd_layout_of_a_box_tapping_its_own_wire_terminates() -> None:
+    tap = FbdBranch(source="&9")
+    looped = FbdLogic(id="&9", op="AND", inputs=[FbdOperand(operand="I 0.0"), tap])
+    view = FbdNetwork(outputs=[FbdAssign(id="q", coil="=", operand="Q 4.0", input=looped)])
+    layout = fbd_layout(view)
+    assert [(node.id, node.layer) for node in layout.nodes] == [("q", 1), ("&9", 0)]
+    assert [(e.source, e.target) for e in layout.edges] == [("&9", "q")]
 
 
 def test_fbd_layout_of_a_shape_lad_refuses_still_terminates() -> None:
