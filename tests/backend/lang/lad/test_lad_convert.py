@@ -164,3 +164,31 @@ def test_post_convert(client: TestClient) -> None:
     }
     refused = client.post("/api/convert", json={"name": "m.awl", "text": "", "to": "ladder"})
     assert refused.status_code == 422
+
+
+def test_post_convert_gives_what_the_editors_draw(client: TestClient) -> None:
+    """To LAD every network comes with its grid, to FBD with its boxes, wires and layers; a
+    network kept as STL has nothing to draw; to STL there is nothing to draw at all."""
+    lad = client.post("/api/convert", json={"name": "m.awl", "text": MIXED_STL, "to": "lad"})
+    drawings = lad.json()["drawings"]
+    blocks = lad.json()["blocks"]
+    assert [len(block) for block in drawings] == [len(block["networks"]) for block in blocks]
+    first = drawings[0][0]
+    assert (first["fbd"], first["fbd_layout"]) == (None, None)
+    placed = {cell["id"] for cell in first["lad"]["cells"]}
+    assert {"e2", "e5"} <= placed  # a contact and the coil (e1 is the parallel around e2)
+    assert drawings[0][2]["lad"]["cells"] == []  # the XOR network stays STL
+
+    fbd = client.post("/api/convert", json={"name": "m.awl", "text": MIXED_STL, "to": "fbd"})
+    first = fbd.json()["drawings"][0][0]
+    assert first["lad"] is None
+    assert first["fbd"]["outputs"][0]["id"] == "e5"
+    nodes = {node["id"] for node in first["fbd_layout"]["nodes"]}
+    assert "e5" in nodes
+    edges = first["fbd_layout"]["edges"]
+    assert all(edge["source"] in nodes and edge["target"] in nodes for edge in edges)
+
+    stl = client.post(
+        "/api/convert", json={"name": "m.lad", "text": fbd.json()["text"], "to": "stl"}
+    )
+    assert stl.json()["drawings"] is None
