@@ -27,6 +27,15 @@ import {
   stlLanguage,
 } from '../../frontend/src/editor/languages/stl';
 import { SCL_EXAMPLE, STL_EXAMPLE } from '../../frontend/src/editor/examples';
+import {
+  LAD_ELEMENTS,
+  LAD_STRUCTURE_KEYWORDS,
+  LAD_VIEWS,
+  ladConfiguration,
+  ladFoldingRanges,
+  ladLanguage,
+} from '../../frontend/src/editor/languages/lad';
+import { newSourceText } from '../../frontend/src/projects/fileNames';
 
 const root = path.resolve(__dirname, '../..');
 const read = (file: string) => fs.readFileSync(path.join(root, file), 'utf8');
@@ -97,6 +106,14 @@ describe('the word lists are the compilers\' own', () => {
     expect(sorted(SCL_STANDARD_FUNCTIONS)).toEqual(sorted(standard));
   });
 
+  it('LAD/FBD: the keywords and element names of grammars/lad.lark', () => {
+    // KEYWORD.5: /WORD(?!\w)/i and /(?:ONE|TWO)(?!\w)/i
+    const terminals = [...read('grammars/lad.lark').matchAll(/^[A-Z_]+\.5:\s*\/(?:\(\?:)?([A-Z_|]+)\)?\(\?!\\w\)\/i\s*$/gm)];
+    const words = terminals.flatMap((m) => m[1]!.split('|'));
+    expect(words.length).toBeGreaterThan(40);
+    expect(sorted([...LAD_STRUCTURE_KEYWORDS, ...LAD_ELEMENTS, ...LAD_VIEWS])).toEqual(sorted(words));
+  });
+
   it('the data types of nasaq.ir.types, with STRING and VOID', () => {
     const types = read('backend/nasaq/ir/types.py');
     const elementary = pythonDict(types, 'ELEMENTARY_BITS').map(([key]) => key);
@@ -126,6 +143,7 @@ beforeAll(async () => {
   for (const [id, language, configuration] of [
     ['stl', stlLanguage, stlConfiguration],
     ['scl', sclLanguage, sclConfiguration],
+    ['lad', ladLanguage, ladConfiguration],
   ] as const) {
     monaco.languages.register({ id });
     monaco.languages.setMonarchTokensProvider(id, language);
@@ -134,7 +152,7 @@ beforeAll(async () => {
 }, 120_000);
 
 /** [text, token type] of every token that is not blank, line after line. */
-function tokens(text: string, language: 'stl' | 'scl'): Array<[string, string]> {
+function tokens(text: string, language: 'stl' | 'scl' | 'lad'): Array<[string, string]> {
   const lines = text.split('\n');
   return monaco.editor.tokenize(text, language).flatMap((lineTokens, index) => {
     const line = lines[index] ?? '';
@@ -149,6 +167,7 @@ function tokens(text: string, language: 'stl' | 'scl'): Array<[string, string]> 
 
 const stl = (text: string) => tokens(text, 'stl');
 const scl = (text: string) => tokens(text, 'scl');
+const lad = (text: string) => tokens(text, 'lad');
 
 describe('STL tokenizer', () => {
   it('reads a statement as instruction, operand and comment', () => {
@@ -385,6 +404,135 @@ describe('SCL tokenizer', () => {
       { start: 2, end: 4 },
       { start: 6, end: 13 },
       { start: 10, end: 12 },
+    ]);
+  });
+});
+
+describe('LAD/FBD text tokenizer', () => {
+  it('reads structure keywords, elements, operands, pins and element ids', () => {
+    expect(lad('RUNG Contact(I 0.0) ContactNC("Stop") Coil(#out) @q END_RUNG')).toEqual([
+      ['RUNG', 'keyword'],
+      ['Contact', 'keyword.instruction'],
+      ['(', 'delimiter.parenthesis'],
+      ['I 0.0', 'address'],
+      [')', 'delimiter.parenthesis'],
+      ['ContactNC', 'keyword.instruction'],
+      ['(', 'delimiter.parenthesis'],
+      ['"Stop"', 'variable.symbol'],
+      [')', 'delimiter.parenthesis'],
+      ['Coil', 'keyword.instruction'],
+      ['(', 'delimiter.parenthesis'],
+      ['#out', 'variable.local'],
+      [')', 'delimiter.parenthesis'],
+      ['@q', 'tag'],
+      ['END_RUNG', 'keyword'],
+    ]);
+    expect(lad('Box(ADD_I, IN1 := MW 10, OUT => MW 12) SD(T 1, S5T#5S) JumpN(M001)')).toEqual([
+      ['Box', 'keyword.instruction'],
+      ['(', 'delimiter.parenthesis'],
+      ['ADD_I', 'identifier'],
+      [',', 'delimiter'],
+      ['IN1', 'identifier'],
+      [':=', 'operator'],
+      ['MW 10', 'address'],
+      [',', 'delimiter'],
+      ['OUT', 'identifier'],
+      ['=>', 'operator'],
+      ['MW 12', 'address'],
+      [')', 'delimiter.parenthesis'],
+      ['SD', 'keyword.instruction'],
+      ['(', 'delimiter.parenthesis'],
+      ['T 1', 'address'],
+      [',', 'delimiter'],
+      ['S5T#5S', 'number'],
+      [')', 'delimiter.parenthesis'],
+      ['JumpN', 'keyword.instruction'],
+      ['(', 'delimiter.parenthesis'],
+      ['M001', 'label'],
+      [')', 'delimiter.parenthesis'],
+    ]);
+  });
+
+  it('reads headers, titles, labels and both comment forms', () => {
+    const text = 'FUNCTION FC 10 : VOID\nLANGUAGE FBD\nTITLE = Gates (* old *)\nNETWORK\nLABEL M001 // jump here';
+    expect(lad(text)).toEqual([
+      ['FUNCTION', 'keyword'],
+      ['FC 10', 'address'],
+      [':', 'delimiter'],
+      ['VOID', 'type'],
+      ['LANGUAGE', 'keyword'],
+      ['FBD', 'keyword'],
+      ['TITLE', 'keyword'],
+      ['= Gates (* old *)', 'comment.title'],
+      ['NETWORK', 'keyword'],
+      ['LABEL', 'keyword'],
+      ['M001', 'label'],
+      ['// jump here', 'comment'],
+    ]);
+    expect(lad('(* a\nblock comment *) BEGIN')).toEqual([
+      ['(* a', 'comment'],
+      ['block comment *)', 'comment'],
+      ['BEGIN', 'keyword'],
+    ]);
+  });
+
+  it('reads a network kept as STL with the STL tokenizer, up to END_STL', () => {
+    const text = 'STL REASON LAD306\n      A     I 0.0;\n      =     Q 4.0;\nEND_STL\nNETWORK';
+    expect(lad(text)).toEqual([
+      ['STL', 'keyword'],
+      ['REASON', 'keyword'],
+      ['LAD306', 'string.reason'],
+      ['A', 'keyword.instruction.stl'],
+      ['I 0.0', 'address.stl'],
+      [';', 'delimiter.stl'],
+      ['=', 'keyword.instruction.stl'],
+      ['Q 4.0', 'address.stl'],
+      [';', 'delimiter.stl'],
+      ['END_STL', 'keyword'],
+      ['NETWORK', 'keyword'],
+    ]);
+  });
+
+  it('tokenizes every example LAD/FBD file and the new-source text without unknown text', () => {
+    const folder = path.join(root, 'examples/lad');
+    const files = fs.readdirSync(folder).filter((name) => /\.(?:lad|fbd)$/.test(name));
+    expect(files.length).toBeGreaterThan(20);
+    for (const text of [...files.map((name) => read(`examples/lad/${name}`)), newSourceText('lad', []), newSourceText('fbd', [])]) {
+      const unknown = lad(text).filter(([, type]) => type === '');
+      expect(unknown).toEqual([]);
+    }
+  });
+
+  it('folds blocks, networks, rungs, parallels, branches and STL networks', () => {
+    const text = [
+      'ORGANIZATION_BLOCK OB 1', // 1
+      'TITLE = an STL title, not an STL network', // 2
+      'BEGIN', // 3
+      'NETWORK', // 4
+      'RUNG', // 5
+      '  PARALLEL', // 6
+      '    BRANCH Contact(I 0.0) END_BRANCH', // 7
+      '    BRANCH', // 8
+      '      Contact(Q 4.0)', // 9
+      '    END_BRANCH', // 10
+      '  END_PARALLEL', // 11
+      '  Coil(Q 4.0)', // 12
+      'END_RUNG', // 13
+      'NETWORK', // 14
+      'STL REASON LAD306', // 15
+      '      A     I 0.1;  // RUNG in a comment', // 16
+      '      =     Q 4.1;', // 17
+      'END_STL', // 18
+      'END_ORGANIZATION_BLOCK', // 19
+    ].join('\n');
+    expect(ladFoldingRanges(text)).toEqual([
+      { start: 1, end: 19 },
+      { start: 4, end: 13 },
+      { start: 5, end: 13 },
+      { start: 6, end: 11 },
+      { start: 8, end: 10 },
+      { start: 14, end: 18 },
+      { start: 15, end: 18 },
     ]);
   });
 });

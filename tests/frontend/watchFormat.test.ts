@@ -96,5 +96,8 @@ describe('symbols and I/O bytes of the sources', () => {
     const german = { name: 'FC1.awl', text: 'U E 6.1\n= A 5.0\nL PEW 256\nT AW 8\nA I 0.0\nE001: NOP 0' };
     expect(usedIoBytes([german])).toEqual({ inputs: [0, 6], outputs: [5, 8, 9] });
     expect(usedIoBytes([{ name: 'FC2.scl', text: '%Q7.1 := %I12.0 AND x; y := 1.5E 3;' }])).toEqual({ inputs: [12], outputs: [7] });
+    const ladder = 'RUNG\n  Contact(I 3.0)\n  ContactNC("Stop")\n  Coil(Q 6.1)\nEND_RUNG';
+    expect(usedIoBytes([{ name: 'Latch.lad', text: ladder }])).toEqual({ inputs: [3], outputs: [6] });
+    expect(usedIoBytes([{ name: 'Gates.fbd', text: ladder }])).toEqual({ inputs: [3], outputs: [6] });
   });
 });

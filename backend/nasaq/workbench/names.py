@@ -1,7 +1,8 @@
 """Which names a project file may have, and what language a name means.
 
-A name is what the compiler reads by its suffix (``.awl``/``.stl`` STL, ``.scl`` SCL, ``.sdf``,
-``.asc``, ``.seq``, ``.csv`` symbol tables) and also a plain file in an export, so it avoids what
+A name is what the compiler reads by its suffix (``.awl``/``.stl`` STL, ``.scl`` SCL, ``.lad``
+LAD and ``.fbd`` FBD in their text format, ``.sdf``, ``.asc``, ``.seq``, ``.csv`` symbol tables)
+and also a plain file in an export, so it avoids what
 any file system or zip tool refuses: path separators, control and reserved characters, Windows'
 device names, a leading dot (hidden files) and a trailing dot or space (Windows drops them).
 """
@@ -11,27 +12,31 @@ from __future__ import annotations
 import re
 from typing import Literal
 
-from nasaq.lang.stl.compiler import MAX_SOURCE_CHARS, SCL_SUFFIXES, STL_SUFFIXES
+from nasaq.lang.stl.compiler import LAD_SUFFIXES, MAX_SOURCE_CHARS, SCL_SUFFIXES, STL_SUFFIXES
 from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES
 
-Language = Literal["stl", "scl", "symbols"]
+BlockLanguage = Literal["stl", "scl", "lad", "fbd"]
+Language = Literal["stl", "scl", "lad", "fbd", "symbols"]
 
 MAX_NAME_CHARS = 128
 MAX_TEXT_CHARS = MAX_SOURCE_CHARS  # the compiler refuses larger sources (STL111)
 MAX_FILES = 500  # what one download into a simulated CPU accepts
-SOURCE_SUFFIXES = STL_SUFFIXES + SCL_SUFFIXES + SYMBOL_TABLE_SUFFIXES
+SOURCE_SUFFIXES = STL_SUFFIXES + SCL_SUFFIXES + LAD_SUFFIXES + SYMBOL_TABLE_SUFFIXES
 
 _FORBIDDEN = re.compile(r'[\x00-\x1f\x7f/\\:*?"<>|]')
 _DEVICES = re.compile(r"(CON|PRN|AUX|NUL|COM\d|LPT\d)", re.IGNORECASE)
 
 
 def language_of(name: str) -> Language | None:
-    """``stl``, ``scl`` or ``symbols`` by the suffix, as the compiler decides; else None."""
+    """``stl``, ``scl``, ``lad``, ``fbd`` or ``symbols`` by the suffix, as the compiler
+    decides; else None."""
     suffix = name[name.rfind(".") :].lower() if "." in name else ""
     if suffix in STL_SUFFIXES:
         return "stl"
     if suffix in SCL_SUFFIXES:
         return "scl"
+    if suffix in LAD_SUFFIXES:
+        return "lad" if suffix == ".lad" else "fbd"
     if suffix in SYMBOL_TABLE_SUFFIXES:
         return "symbols"
     return None

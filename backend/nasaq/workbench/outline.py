@@ -16,7 +16,6 @@ import hashlib
 import re
 import threading
 from collections import OrderedDict
-from typing import Literal
 
 from pydantic import BaseModel, Field
 
@@ -24,6 +23,7 @@ from nasaq.ir import Program
 from nasaq.lang.stl import SourceFile, compile_sources
 from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES, SymbolTable, read_symbol_table
 from nasaq.workbench.members import Member, block_members
+from nasaq.workbench.names import BlockLanguage
 from nasaq.workbench.tree import KindName, user_blocks
 
 _COMMENT = re.compile(r"//(.*)$")
@@ -45,7 +45,7 @@ class OutlineBlock(BaseModel):
     kind: KindName
     number: int
     name: str = Field(description="Symbolic name, empty when the block has none")
-    language: Literal["stl", "scl"]
+    language: BlockLanguage
     file: str
     line: int | None = Field(description="Line of the block's header")
     return_type: str | None = Field(description="FCs: the return type ('VOID', 'REAL')")

@@ -17,7 +17,7 @@ from pydantic import BaseModel, Field
 from nasaq.diagnostics import Diagnostic
 from nasaq.ir import Block, BlockKind
 from nasaq.lang.stl import SourceFile, compile_sources
-from nasaq.workbench.names import language_of
+from nasaq.workbench.names import BlockLanguage, language_of
 
 KindName = Literal["OB", "FB", "FC", "DB", "UDT"]
 BLOCK_KINDS: dict[BlockKind, KindName] = {
@@ -42,7 +42,7 @@ class TreeBlock(BaseModel):
     number: int
     name: str = Field(description="Symbolic name, empty when the block has none")
     title: str
-    language: Literal["stl", "scl"]
+    language: BlockLanguage
     file: str
     line: int | None = Field(
         description="Line of the block's header in its file; null for an instance DB the "
@@ -84,7 +84,7 @@ def user_blocks(blocks: Iterable[Block], texts: dict[str, str]) -> list[tuple[Bl
     for block in blocks:
         language = language_of(block.file)
         kind = BLOCK_KINDS.get(block.kind)
-        if kind is None or block.file not in texts or language not in ("stl", "scl"):
+        if kind is None or block.file not in texts or language is None or language == "symbols":
             continue
         if block.file not in headers:
             headers[block.file] = header_lines(texts[block.file])

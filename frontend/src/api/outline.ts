@@ -4,7 +4,7 @@
  * The shapes are held to the OpenAPI document by `tests/frontend/intellisenseApi.test.ts`.
  */
 import { ApiError, CLIENT_ERROR_CODES } from './client';
-import type { ApiProblem, BlockKind } from './types';
+import type { ApiProblem, BlockKind, BlockLanguage } from './types';
 
 /** One row of a symbol table (backend `OutlineSymbol`). */
 export interface OutlineSymbol {
@@ -41,7 +41,7 @@ export interface OutlineBlock {
   kind: BlockKind;
   number: number;
   name: string;
-  language: 'stl' | 'scl';
+  language: BlockLanguage;
   file: string;
   line: number | null;
   return_type: string | null;

@@ -79,7 +79,9 @@ export interface Diagnostic {
 }
 
 /** What a project file holds, by its suffix: STL, SCL or a symbol table. */
-export type FileLanguage = 'stl' | 'scl' | 'symbols';
+export type FileLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'symbols';
+/** The language a block is written in: its file's (LAD and FBD blocks are kept as text). */
+export type BlockLanguage = Exclude<FileLanguage, 'symbols'>;
 
 /** One source file of a project (`GET /api/projects/{id}/files`). */
 export interface FileInfo {
@@ -121,7 +123,7 @@ export interface TreeBlock {
   /** Symbolic name, empty when the block has none. */
   name: string;
   title: string;
-  language: 'stl' | 'scl';
+  language: BlockLanguage;
   /** The file that defines the block. */
   file: string;
   /** Line of the block's header in its file; null for an instance DB the compiler created. */

@@ -113,7 +113,7 @@ export function usedIoBytes(sources: readonly SourceText[], limit = 16): IoBytes
   };
   for (const source of sources) {
     const lower = source.name.toLowerCase();
-    if (lower.endsWith('.awl') || lower.endsWith('.stl') || lower.endsWith('.scl')) {
+    if (/\.(?:awl|stl|scl|lad|fbd)$/.test(lower)) {
       for (const match of source.text.matchAll(IN_CODE)) {
         const size = (match[3] ?? '').toUpperCase();
         const byte = Number(match[4] ?? match[5]);

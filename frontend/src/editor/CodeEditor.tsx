@@ -7,10 +7,17 @@ import { loadMonaco, type MonacoApi } from './monaco/load';
 import { THEME_NAME } from './monaco/constants';
 import { bindModel, type ModelSource } from './intellisense/modelRegistry';
 
-export type SourceLanguage = 'stl' | 'scl' | 'symbols';
+export type SourceLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'symbols';
 
-/** Monaco's language of each source language: symbol tables are plain CSV-like text. */
-const MODEL_LANGUAGE: Record<SourceLanguage, string> = { stl: 'stl', scl: 'scl', symbols: 'plaintext' };
+/** Monaco's language of each source language: LAD and FBD share their text format, symbol
+ * tables are plain CSV-like text. */
+const MODEL_LANGUAGE: Record<SourceLanguage, string> = {
+  stl: 'stl',
+  scl: 'scl',
+  lad: 'lad',
+  fbd: 'lad',
+  symbols: 'plaintext',
+};
 
 /** A place the editor should show (see `RevealRequest` of the tabs): a new object each time. */
 export interface EditorReveal {

@@ -16,7 +16,7 @@ import { useOpenProjectFile } from './useOpenProjectFile';
 import { useSourceFile } from './useSourceFile';
 import './source.css';
 
-const LANGUAGE_NAMES = { stl: 'STL', scl: 'SCL' } as const;
+const LANGUAGE_NAMES = { stl: 'STL', scl: 'SCL', lad: 'LAD', fbd: 'FBD' } as const;
 
 /** How long "no definition here" stays in the status line. */
 const NOTICE_MS = 4000;
@@ -89,7 +89,9 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
     },
     [tab.id],
   );
-  const codeLanguage = tab.language === 'symbols' ? null : tab.language;
+  // Monitoring and breakpoints follow STL and SCL lines; a LAD/FBD text gets them with the
+  // graphical editors (its element status needs the rung, not the text).
+  const codeLanguage = tab.language === 'stl' || tab.language === 'scl' ? tab.language : null;
   const renderExtras: RenderEditorExtras | undefined =
     file && codeLanguage
       ? (editor, monaco) => (

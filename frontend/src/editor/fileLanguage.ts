@@ -6,9 +6,11 @@ export function languageOfFile(name: string): SourceLanguage | null {
   const suffix = dot >= 0 ? name.slice(dot).toLowerCase() : '';
   if (suffix === '.awl' || suffix === '.stl') return 'stl';
   if (suffix === '.scl') return 'scl';
+  if (suffix === '.lad') return 'lad';
+  if (suffix === '.fbd') return 'fbd';
   if (['.sdf', '.asc', '.seq', '.csv'].includes(suffix)) return 'symbols';
   return null;
 }
 
 /** The suffix a new source of the language gets. */
-export const SOURCE_SUFFIX = { stl: 'awl', scl: 'scl' } as const;
+export const SOURCE_SUFFIX = { stl: 'awl', scl: 'scl', lad: 'lad' } as const;

@@ -29,7 +29,7 @@ export function useOpenProjectFile(): OpenProjectFile {
       const file = await getFile(projectId, name);
       openSource({
         name: file.name,
-        language: languageOfFile(file.name) ?? (file.language === 'scl' ? 'scl' : file.language === 'stl' ? 'stl' : 'symbols'),
+        language: languageOfFile(file.name) ?? file.language,
         text: file.text,
         file: { projectId, path: file.name },
         version: file.version,

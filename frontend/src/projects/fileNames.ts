@@ -12,7 +12,7 @@ function split(name: string): [string, string] {
 }
 
 /** `Source1.awl`, or the first number no file of the project uses yet. */
-export function freeSourceName(files: readonly FileInfo[], suffix: 'awl' | 'scl'): string {
+export function freeSourceName(files: readonly FileInfo[], suffix: 'awl' | 'scl' | 'lad' | 'fbd'): string {
   let number = 1;
   while (nameTaken(files, `Source${number}.${suffix}`)) number += 1;
   return `Source${number}.${suffix}`;
@@ -34,9 +34,32 @@ function freeFc(blocks: readonly TreeBlock[]): number {
   return number;
 }
 
-/** What a new source holds: an empty function with the first free FC number, which compiles. */
-export function newSourceText(language: 'stl' | 'scl', blocks: readonly TreeBlock[]): string {
+/** The languages a new source can be written in. */
+export type NewSourceLanguage = 'stl' | 'scl' | 'lad' | 'fbd';
+
+/**
+ * What a new source holds: an empty function with the first free FC number, which compiles. A
+ * LAD/FBD source shows the shape of a network in a comment (the text format has no empty rung).
+ */
+export function newSourceText(language: NewSourceLanguage, blocks: readonly TreeBlock[]): string {
   const number = freeFc(blocks);
+  if (language === 'lad' || language === 'fbd') {
+    return `FUNCTION FC ${number} : VOID
+TITLE =
+${language === 'fbd' ? 'LANGUAGE FBD\n' : ''}BEGIN
+// NETWORK
+// TITLE = Self-holding
+// RUNG
+//   PARALLEL
+//     BRANCH Contact("Start") END_BRANCH
+//     BRANCH Contact("Motor") END_BRANCH
+//   END_PARALLEL
+//   ContactNC("Stop")
+//   Coil("Motor")
+// END_RUNG
+END_FUNCTION
+`;
+  }
   if (language === 'stl') {
     return `FUNCTION FC ${number} : VOID
 TITLE =

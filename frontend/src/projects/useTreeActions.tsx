@@ -14,7 +14,7 @@ import {
 import type { Project } from '../api/types';
 import { discardFile, flushFile, rebaseFile } from '../editor/autosave';
 import { useEditorTabs } from '../editor/EditorTabsContext';
-import { languageOfFile } from '../editor/fileLanguage';
+import { SOURCE_SUFFIX, languageOfFile } from '../editor/fileLanguage';
 import { useOpenProjectFile } from '../editor/useOpenProjectFile';
 import { fileKey } from './blockFolders';
 import { freeCopyName, freeSourceName, nameTaken, newSourceText } from './fileNames';
@@ -24,7 +24,7 @@ import { ConfirmDialog, FileNameDialog, ProjectNameDialog } from './TreeDialogs'
 import type { TreeRow } from './treeRows';
 
 type TreeDialog =
-  | { kind: 'new'; projectId: number; language: 'stl' | 'scl' }
+  | { kind: 'new'; projectId: number; language: 'stl' | 'scl' | 'lad' }
   | { kind: 'rename'; projectId: number; name: string }
   | { kind: 'duplicate'; projectId: number; name: string }
   | { kind: 'deleteFile'; projectId: number; name: string }
@@ -107,6 +107,7 @@ export function useTreeActions({ showError, selectKey, onProjectDeleted, onProje
     const creating: MenuAction[] = [
       { id: 'new-stl', label: t('projects.actions.newStl'), onSelect: () => setDialog({ kind: 'new', projectId, language: 'stl' }) },
       { id: 'new-scl', label: t('projects.actions.newScl'), onSelect: () => setDialog({ kind: 'new', projectId, language: 'scl' }) },
+      { id: 'new-lad', label: t('projects.actions.newLad'), onSelect: () => setDialog({ kind: 'new', projectId, language: 'lad' }) },
     ];
     switch (row.type) {
       case 'project':
@@ -162,13 +163,13 @@ export function useTreeActions({ showError, selectKey, onProjectDeleted, onProje
       <FileNameDialog
         title={t(`projects.files.newTitle.${language}`)}
         submitLabel={t('projects.files.create')}
-        initialName={freeSourceName(filesOf(projectId), language === 'stl' ? 'awl' : 'scl')}
+        initialName={freeSourceName(filesOf(projectId), SOURCE_SUFFIX[language])}
         testId="file-new-dialog"
         onClose={close}
         onSubmit={async (name) => {
           if (nameTaken(filesOf(projectId), name)) throw takenError(name);
           const typed = languageOfFile(name);
-          const text = newSourceText(typed === 'scl' || typed === 'stl' ? typed : language, projectContents.get(projectId)?.blocks ?? []);
+          const text = newSourceText(typed && typed !== 'symbols' ? typed : language, projectContents.get(projectId)?.blocks ?? []);
           const info = await saveFile(projectId, name, { text });
           projectContents.putFile(projectId, info);
           projectContents.reloadSoon(projectId);

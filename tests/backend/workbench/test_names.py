@@ -7,11 +7,23 @@ from nasaq.workbench.names import SOURCE_SUFFIXES, is_valid_name, language_of
 
 
 def test_the_suffixes_are_what_the_compiler_reads() -> None:
-    assert SOURCE_SUFFIXES == (".awl", ".stl", ".scl", ".sdf", ".asc", ".seq", ".csv")
+    assert SOURCE_SUFFIXES == (
+        ".awl",
+        ".stl",
+        ".scl",
+        ".lad",
+        ".fbd",
+        ".sdf",
+        ".asc",
+        ".seq",
+        ".csv",
+    )
     assert [language_of(f"x{s.upper()}") for s in SOURCE_SUFFIXES] == [
         "stl",
         "stl",
         "scl",
+        "lad",
+        "fbd",
         "symbols",
         "symbols",
         "symbols",
@@ -28,6 +40,8 @@ def test_the_suffixes_are_what_the_compiler_reads() -> None:
         ("Motor control.scl", True),
         ("موتور.scl", True),
         ("v1.2.awl", True),
+        ("Latch.lad", True),
+        ("Gates.FBD", True),
         ("nul.awl", False),
         ("COM1.backup.awl", False),
         ("OB1.awl.", False),

@@ -70,6 +70,26 @@ def _blocks(client: TestClient, project_id: int) -> dict[str, Any]:
     return found
 
 
+def _start_shows_the_motor_on(client: TestClient, session: dict[str, Any]) -> bool:
+    """Over the session's socket: I0.0 on, watch Q4.0, RUN; whether a frame shows Q4.0 on."""
+    with client.websocket_connect(session["websocket"]) as socket:
+        assert socket.receive_json()["type"] == "hello"
+        commands: list[dict[str, Any]] = [
+            {"type": "set_input", "address": "I0.0", "value": 1},
+            {"type": "watch", "entries": ["Q4.0"]},
+            {"type": "run"},
+        ]
+        for ref, command in enumerate(commands):
+            socket.send_json({**command, "ref": ref})
+        for _ in range(100):
+            message = socket.receive_json()
+            assert message["type"] != "error", message
+            watched = message.get("watch") if message["type"] == "frame" else None
+            if watched and watched["Q4.0"]["value"] is True:
+                return True
+    return False
+
+
 def test_blocks_of_stl_scl_and_symbols_in_tree_order(client: TestClient) -> None:
     files = {"OB1.awl": OB1, "FC3.awl": FC3, "Level.scl": LEVEL, "symbols.sdf": SYMBOLS}
     project_id = make_project(client, "Tank", files)
@@ -157,24 +177,7 @@ def test_a_session_from_the_project_runs_its_program(client: TestClient) -> None
     assert session["cpu"]["mode"] == "STOP"
     assert session["cpu"]["cycle_ms"] == 20
     try:
-        with client.websocket_connect(session["websocket"]) as socket:
-            assert socket.receive_json()["type"] == "hello"
-            commands: list[dict[str, Any]] = [
-                {"type": "set_input", "address": "I0.0", "value": 1},
-                {"type": "watch", "entries": ["Q4.0"]},
-                {"type": "run"},
-            ]
-            for ref, command in enumerate(commands):
-                socket.send_json({**command, "ref": ref})
-            value = None
-            for _ in range(100):
-                message = socket.receive_json()
-                assert message["type"] != "error", message
-                if message["type"] == "frame" and message.get("watch"):
-                    value = message["watch"]["Q4.0"]["value"]
-                    if value:
-                        break
-            assert value is True
+        assert _start_shows_the_motor_on(client, session)
         info = client.get(f"/api/sessions/{session['id']}").json()
         assert info["cpu"]["mode"] == "RUN"
         assert info["cpu"]["scans"] >= 1
@@ -190,3 +193,63 @@ def test_a_project_that_does_not_compile_gets_no_session(client: TestClient) -> 
     assert error["code"] == "MON611"
     assert "OB1.awl:4:" in error["params"]["first"]
     assert error_of(client.post("/api/projects/999/sessions"))["code"] == "API104"
+
+
+LATCH_LAD = """\
+// the motor latch of MOTOR, drawn as a rung
+ORGANIZATION_BLOCK OB 1
+BEGIN
+NETWORK
+TITLE = Self-holding
+RUNG
+  PARALLEL
+    BRANCH Contact(I 0.0) END_BRANCH
+    BRANCH Contact(Q 4.0) END_BRANCH
+  END_PARALLEL
+  ContactNC(I 0.1)
+  Coil(Q 4.0)
+END_RUNG
+END_ORGANIZATION_BLOCK
+"""
+
+
+def test_lad_and_fbd_files_are_sources_of_the_project(client: TestClient) -> None:
+    fc3 = LATCH_LAD.replace("ORGANIZATION_BLOCK OB 1", "FUNCTION FC 3 : VOID").replace(
+        "END_ORGANIZATION_BLOCK", "END_FUNCTION"
+    )
+    files = {"OB1.lad": LATCH_LAD, "FC3.fbd": fc3}
+    build = _blocks(client, make_project(client, "Ladder", files))
+    assert build["diagnostics"] == []
+    rows = [(b["kind"], b["number"], b["language"], b["file"], b["line"]) for b in build["blocks"]]
+    assert rows == [("OB", 1, "lad", "OB1.lad", 2), ("FC", 3, "fbd", "FC3.fbd", 2)]
+    project = client.get(f"/api/projects/{make_project(client, 'Listed', files)}/files").json()
+    assert sorted((f["name"], f["language"]) for f in project) == [
+        ("FC3.fbd", "fbd"),
+        ("OB1.lad", "lad"),
+    ]
+
+
+def test_check_places_a_lad_problem_on_its_line_and_network(client: TestClient) -> None:
+    project_id = make_project(client, "Ladder typing", {"OB1.lad": LATCH_LAD})
+    url = f"/api/projects/{project_id}/check"
+    typing = LATCH_LAD.replace("Coil(Q 4.0)", 'Coil("Lamp")')
+    (problem,) = client.post(url, json={"name": "OB1.lad", "text": typing}).json()["diagnostics"]
+    assert problem["code"] == "STL205"  # the unknown symbol, found in the generated STL
+    assert (problem["span"]["file"], problem["span"]["line"]) == ("OB1.lad", 4)
+    assert problem["span"]["network"] == 1
+    broken = LATCH_LAD.replace("ContactNC(I 0.1)", "ContactNC(I 0.1")
+    (problem,) = client.post(url, json={"name": "OB1.lad", "text": broken}).json()["diagnostics"]
+    assert problem["code"] == "LAD111"  # "',' or ')' expected, found 'Coil'": the text's own
+    assert (problem["span"]["file"], problem["span"]["line"]) == ("OB1.lad", 12)
+
+
+def test_a_session_runs_a_lad_program(client: TestClient) -> None:
+    project_id = make_project(client, "Ladder latch", {"OB1.lad": LATCH_LAD})
+    response = client.post(f"/api/projects/{project_id}/sessions")
+    assert response.status_code == 201, response.text
+    session = response.json()
+    assert session["blocks"] == ["OB1"]
+    try:
+        assert _start_shows_the_motor_on(client, session)
+    finally:
+        client.delete(f"/api/sessions/{session['id']}")

@@ -1,6 +1,7 @@
 /**
  * Monaco as Nasaq uses it, loaded on demand by `load.ts`: the core editor API with the
- * contributions an IDE for STL and SCL needs, the STL and SCL languages and the light theme;
+ * contributions an IDE for STL and SCL needs, the STL, SCL and LAD/FBD text languages and the
+ * light theme;
  * `environment.ts` sets up the editor's web worker. Everything is bundled by Vite: no CDN, no
  * loader, no request to any other host. The JSON/TypeScript/CSS/HTML language services and the
  * ~80 other languages of the full `monaco-editor` entry are left out on purpose.
@@ -47,6 +48,7 @@ import 'monaco-editor/editor/contrib/wordHighlighter/browser/wordHighlighter';
 import 'monaco-editor/editor/contrib/wordOperations/browser/wordOperations';
 import 'monaco-editor/editor/contrib/wordPartOperations/browser/wordPartOperations';
 
+import { LAD_LANGUAGE_ID, ladConfiguration, ladFoldingRanges, ladLanguage } from '../languages/lad';
 import { SCL_LANGUAGE_ID, sclConfiguration, sclFoldingRanges, sclLanguage } from '../languages/scl';
 import { formatScl } from '../languages/sclFormat';
 import { formatStl } from '../languages/stlFormat';
@@ -88,6 +90,9 @@ monaco.languages.registerDocumentFormattingEditProvider(SCL_LANGUAGE_ID, {
     return formatted === text ? [] : [{ range: model.getFullModelRange(), text: formatted }];
   },
 });
+// LAD and FBD blocks as text, until the graphical editors draw them (the STL of networks
+// kept as STL is embedded).
+register(LAD_LANGUAGE_ID, ['.lad', '.fbd'], ladLanguage, ladConfiguration, ladFoldingRanges);
 // Completion and hover help for both languages, from the project outline (intellisense/).
 registerIntellisense(monaco);
 monaco.editor.defineTheme(THEME_NAME, nasaqLightTheme);
