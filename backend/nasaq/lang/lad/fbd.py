@@ -366,8 +366,8 @@ _NO_WIRE: frozenset[str] = frozenset()
 
 class _FromFbd:
     """Reads a node as a LAD series. ``wires`` are the T-branches that may start the chain:
-    the common wire (``_COMMON``) at the start of an output, an AND box's wire at the start of
-    the branches of the OR that follows that box."""
+    the common wire (``_COMMON``) at the start of an output, the wire of an OR's ``flow`` box at
+    the start of each of that OR's branches."""
 
     def __init__(self) -> None:
         self._seen: set[str] = set()
