@@ -14,11 +14,8 @@ import re
 from nasaq.lang.lad.from_stl_reasons import RefusalError, not_convertible
 from nasaq.lang.lad.from_stl_steps import Step
 from nasaq.lang.lad.model import (
-    Box,
     Contact,
-    EdgeContact,
     Element,
-    Invert,
     Midline,
     Parallel,
     Series,
@@ -111,10 +108,3 @@ def _all_branches_start(segment: list[Element], reload: Element) -> bool:
     return is_temp(reload.operand) and all(
         branch.elements and branch.elements[0] == reload for branch in segment[0].branches
     )
-
-
-def acts_on_flow(element: Element) -> bool:
-    """NOT, edges, midlines and boxes other than compares take the whole flow before them."""
-    if isinstance(element, Box):
-        return not element.name.startswith("CMP")
-    return isinstance(element, Invert | EdgeContact | Midline)

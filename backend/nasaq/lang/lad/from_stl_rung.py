@@ -24,7 +24,7 @@ from nasaq.lang.lad.from_stl_box_reading import (
     edge_box,
 )
 from nasaq.lang.lad.from_stl_boxes import TIMERS
-from nasaq.lang.lad.from_stl_chain import Chain, acts_on_flow, is_temp
+from nasaq.lang.lad.from_stl_chain import Chain, is_temp
 from nasaq.lang.lad.from_stl_cursor import COUNTER, RLO_USERS, STATUS_BITS
 from nasaq.lang.lad.from_stl_reasons import RefusalError, not_convertible
 from nasaq.lang.lad.from_stl_steps import Step
@@ -44,6 +44,7 @@ from nasaq.lang.lad.model import (
     Series,
     StatusContact,
 )
+from nasaq.lang.lad.to_stl_boxes import needs_whole_flow
 
 __all__ = ["FinalBoxError", "PinDirections", "RungReader", "is_temp"]
 
@@ -333,7 +334,9 @@ class RungReader(BoxReading):
         op = step.op
         if op == "A(":
             box = edge_box(inner)
-            if box is None and not c.empty() and any(acts_on_flow(e) for e in inner):
+            # NOT, an edge, a midline or a box after other checks, also inside a nested
+            # parallel: in the bracket it sees only the bracket's flow, in LAD the whole flow
+            if box is None and not c.empty() and any(needs_whole_flow(e) for e in inner):
                 self.refuse("LAD327", step)
             self.add(c, False, [box] if box is not None else inner)
         elif op == "AN(":

@@ -62,6 +62,14 @@ def test_the_reason_names_the_instruction(code: str) -> None:
     assert lifted.diagnostic("x.awl", 1).span is not None
 
 
+def test_a_not_inside_a_nested_parallel_after_a_check_stays_stl() -> None:
+    """``A x; A( O y; O( A z; NOT ) )`` is x AND (y OR NOT z); the rung x, (y | z NOT) would
+    invert x AND z instead (a branch starts from the flow into the parallel), so LAD327."""
+    lifted = lift("A I 0.0\nA(\nO I 0.1\nO(\nA I 0.2\nNOT\n)\n)\n= Q 4.0")
+    assert isinstance(lifted, NotConvertible), lifted
+    assert (lifted.code, lifted.instruction) == ("LAD327", "A(")
+
+
 def test_a_syntax_error_in_the_network_is_a_reason() -> None:
     """LAD302: the parser skipped part of the network; it is shown as it was typed."""
     result = lift_block(
