@@ -37,7 +37,8 @@ class _Labels(Protocol):
 
 def needs_whole_flow(element: Element) -> bool:
     """Whether an element acts on the whole power flow into it (it writes memory, runs code or
-    inverts the flow): inside a parallel after other elements it must see that flow too."""
+    inverts the flow): inside a parallel after other elements it must see that flow too. The
+    one definition the lowering, the FBD view (``fbd``) and the lifter (LAD327) share."""
     if isinstance(element, EdgeContact | Midline | Invert):
         return True
     if isinstance(element, Box):
