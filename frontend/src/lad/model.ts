@@ -1,0 +1,423 @@
+// Generated from backend/nasaq/lang/lad/ (model.py, fbd.py, layout.py, layout_fbd.py);
+// do not edit. Regenerate with `.venv/bin/python -m nasaq.lang.lad.typescript --write`.
+
+/**
+ * A code block written in LAD or FBD: its header as in an STL source (kind, number or
+ * name, title, the interface declaration text) and its networks.
+ */
+export interface LadBlock {
+  language: 'LAD' | 'FBD';
+  kind: 'OB' | 'FB' | 'FC';
+  /** 'FC 10', '"Motor"', 'OB 1' as an STL source names it */
+  name: string;
+  /** FC only: VOID, INT, ... */
+  return_type: string | null;
+  title: string;
+  /** The VAR sections as STL/SCL source text, copied as they are */
+  declarations: string;
+  networks: Network[];
+}
+
+/**
+ * One network: a rung (LAD; FBD shows the same tree), an optional jump label at its
+ * start (`LABEL`), its title and comment.
+ *
+ * A rung being drawn may have no outputs yet: an empty rung (a new network; it lowers to an
+ * empty network, or to the label's `NOP 0`) or logic still waiting for its coil, which the
+ * lowering reports (LAD211) as TIA Portal reports an unfinished network at compile time.
+ *
+ * A network without LAD shape stays STL, as in STEP 7's LAD view of an STL block: `stl`
+ * holds its instructions as written (label included) and `stl_reason` the code of the
+ * reason it does not convert (`LAD3xx`); it then has no logic and no outputs.
+ */
+export interface Network {
+  title: string;
+  comment: string;
+  label: string | null;
+  logic: Series;
+  outputs: Output[];
+  stl: string | null;
+  stl_reason: string | null;
+}
+
+/** Elements one after the other (AND). Empty: the rail itself (always powered). */
+export interface Series {
+  elements: Element[];
+}
+
+/** One branch at the rung's end: optional conditions of its own, then its final element. */
+export interface Output {
+  conditions: Series;
+  target: Final;
+}
+
+/** An element of a series, told apart by its `kind`. */
+export type Element = Contact | StatusContact | Invert | EdgeContact | Midline | Box | Parallel;
+
+/** A normally open (`negated` False, STL `A`) or normally closed (`AN`) contact. */
+export interface Contact {
+  /** Unique in the network; empty: numbered on load */
+  id: string;
+  kind: 'contact';
+  operand: string;
+  negated: boolean;
+}
+
+/**
+ * A contact on a status bit or a result of the last math instruction (STL `A OV`,
+ * `A ==0` ...); `negated` is the normally closed form.
+ */
+export interface StatusContact {
+  /** Unique in the network; empty: numbered on load */
+  id: string;
+  kind: 'status';
+  bit: 'OV' | 'OS' | 'BR' | 'UO' | '==0' | '<>0' | '>0' | '<0' | '>=0' | '<=0';
+  negated: boolean;
+}
+
+/** `--|NOT|--`: inverts the power flow (STL `NOT`). */
+export interface Invert {
+  /** Unique in the network; empty: numbered on load */
+  id: string;
+  kind: 'not';
+}
+
+/**
+ * `--(P)--` / `--(N)--` in the rung: the power flow for one scan at a rising/falling
+ * edge of the flow before it; `memory` keeps its previous state (STL `FP`/`FN`). The
+ * address edge boxes (POS/NEG, with an M_BIT pin) are boxes.
+ */
+export interface EdgeContact {
+  /** Unique in the network; empty: numbered on load */
+  id: string;
+  kind: 'edge';
+  edge: 'P' | 'N';
+  memory: string;
+}
+
+/**
+ * `--(#)--`: the power flow so far is written to `operand` and flows on (STL `=` in
+ * the middle of a chain, reloaded with `A`).
+ */
+export interface Midline {
+  /** Unique in the network; empty: numbered on load */
+  id: string;
+  kind: 'midline';
+  operand: string;
+}
+
+/**
+ * An element with named pins (see `nasaq.lang.lad.boxes`): `name` is the box
+ * (`CMP>=I`, `MOVE`, `ADD_I`, `S_ODT`, `SR`, `FC 10`, `"Motor"`, `SFB 4`);
+ * `instance` the instance DB of an FB/SFB call (`DB 10`, or `#inst` for a
+ * multi-instance). `inputs`/`outputs` map a pin to its operand; a Boolean input fed by
+ * logic rather than an operand holds a :class:`Series` (in LAD: a branch drawn into the pin).
+ */
+export interface Box {
+  /** Unique in the network; empty: numbered on load */
+  id: string;
+  kind: 'box';
+  name: string;
+  instance: string | null;
+  inputs: Record<string, string | Series>;
+  outputs: Record<string, string>;
+}
+
+/**
+ * Branches side by side (OR): every branch starts from the power flow into the parallel,
+ * and the flow passes when it passes any branch (a wired OR, as in IEC 61131-3 ladder). An
+ * element in a branch sees the flow at its position: a NOT after `a` in a branch gives
+ * NOT(flow into the parallel AND a).
+ */
+export interface Parallel {
+  /** Unique in the network; empty: numbered on load */
+  id: string;
+  kind: 'parallel';
+  branches: Series[];
+}
+
+/** The final element of an output, told apart by its `kind`. */
+export type Final = Coil | Jump | Return | OpenDb | Box;
+
+/**
+ * A rung's end: `=`/`S`/`R` on a bit, a timer coil with its time value (`value`:
+ * `S5T#5S` or an operand), a counter coil (`SC` with its preset value), or `SAVE`.
+ */
+export interface Coil {
+  /** Unique in the network; empty: numbered on load */
+  id: string;
+  kind: 'coil';
+  coil: '=' | 'S' | 'R' | 'SP' | 'SE' | 'SD' | 'SS' | 'SF' | 'CU' | 'CD' | 'SC' | 'SAVE';
+  operand: string;
+  value: string | null;
+}
+
+/**
+ * `--(JMP)--` to `label` when powered, `--(JMPN)--` when not (STL `JC`/`JCN`; a
+ * jump straight from the rail is `JU`).
+ */
+export interface Jump {
+  /** Unique in the network; empty: numbered on load */
+  id: string;
+  kind: 'jump';
+  negated: boolean;
+  label: string;
+}
+
+/** `--(RET)--`: ends the block when powered (STL `BEC`). */
+export interface Return {
+  /** Unique in the network; empty: numbered on load */
+  id: string;
+  kind: 'ret';
+}
+
+/** `--(OPN)--`: opens a data block (STL `OPN DB n`); it needs no power flow. */
+export interface OpenDb {
+  /** Unique in the network; empty: numbered on load */
+  id: string;
+  kind: 'opn';
+  block: string;
+}
+
+/** One network in FBD: the common logic and the final boxes fed from it. */
+export interface FbdNetwork {
+  title: string;
+  comment: string;
+  label: string | null;
+  logic: FbdNode;
+  outputs: FbdFinal[];
+  /** A network that stays STL (no LAD/FBD shape): its lines */
+  stl: string | null;
+  stl_reason: string | null;
+}
+
+/** A node of an FBD network, told apart by its `kind`. */
+export type FbdNode =
+  | FbdOperand
+  | FbdStatus
+  | FbdLogic
+  | FbdNot
+  | FbdEdge
+  | FbdMidline
+  | FbdBox
+  | FbdBranch;
+
+/** An operand on a Boolean pin; `negated` draws the negation circle (LAD: NC contact). */
+export interface FbdOperand {
+  /** The LAD element's id; AND boxes get '&1', '&2' ... */
+  id: string;
+  kind: 'operand';
+  operand: string;
+  negated: boolean;
+}
+
+/** A status bit on a Boolean pin (`OV`, `==0` ...), optionally negated. */
+export interface FbdStatus {
+  /** The LAD element's id; AND boxes get '&1', '&2' ... */
+  id: string;
+  kind: 'status';
+  bit: 'OV' | 'OS' | 'BR' | 'UO' | '==0' | '<>0' | '>0' | '<0' | '>=0' | '<=0';
+  negated: boolean;
+}
+
+/**
+ * `AND`, `OR` or `XOR` (FBD only) of its inputs. An `OR` drawing a LAD parallel
+ * whose branches act on the flow has `flow`: the AND box of the power flow into the
+ * parallel, which every branch starts from through a T-branch of its wire
+ * (`FbdBranch(source=flow.id)`); it is evaluated before the inputs.
+ */
+export interface FbdLogic {
+  /** The LAD element's id; AND boxes get '&1', '&2' ... */
+  id: string;
+  kind: 'logic';
+  op: 'AND' | 'OR' | 'XOR';
+  inputs: FbdNode[];
+  flow: FbdNode | null;
+}
+
+/** Negates its input (LAD `--|NOT|--`). */
+export interface FbdNot {
+  /** The LAD element's id; AND boxes get '&1', '&2' ... */
+  id: string;
+  kind: 'not';
+  input: FbdNode;
+}
+
+/** `P`/`N` edge of its input, remembered in `memory` (STL `FP`/`FN`). */
+export interface FbdEdge {
+  /** The LAD element's id; AND boxes get '&1', '&2' ... */
+  id: string;
+  kind: 'edge';
+  edge: 'P' | 'N';
+  memory: string;
+  input: FbdNode;
+}
+
+/** The `#` box: writes its input to `operand` and passes it on. */
+export interface FbdMidline {
+  /** The LAD element's id; AND boxes get '&1', '&2' ... */
+  id: string;
+  kind: 'midline';
+  operand: string;
+  input: FbdNode;
+}
+
+/**
+ * Every element with named pins (`nasaq.lang.lad.model.Box`, one to one); `en` is the
+ * flow into its flow pin (EN, or a timer's S ...), its output the ENO (or Q). A box without a
+ * flow pin (comparators, POS/NEG: `en` None) is one more input of an AND, like a contact, as
+ * STEP 7 draws it. A Boolean pin fed by logic holds a node.
+ */
+export interface FbdBox {
+  /** The LAD element's id; AND boxes get '&1', '&2' ... */
+  id: string;
+  kind: 'box';
+  name: string;
+  instance: string | null;
+  en: FbdNode | null;
+  inputs: Record<string, string | FbdNode>;
+  outputs: Record<string, string>;
+}
+
+/**
+ * A T-branch: the wire of the network's common logic (:attr:`FbdNetwork.logic`) where an
+ * output branches off it, or (`source` set) the wire of the AND box `source` that is the
+ * `flow` of an OR, at the start of each of that OR's branches.
+ */
+export interface FbdBranch {
+  /** The LAD element's id; AND boxes get '&1', '&2' ... */
+  id: string;
+  kind: 'branch';
+  /** The tapped AND box; empty: the common logic */
+  source: string;
+}
+
+/** A final box of an FBD network, by its `kind`. */
+export type FbdFinal = FbdAssign | FbdJump | FbdReturn | FbdOpenDb | FbdBox;
+
+/** The assignment box `=`, `S`, `R`, a timer/counter coil box or `SAVE`. */
+export interface FbdAssign {
+  /** The LAD element's id; AND boxes get '&1', '&2' ... */
+  id: string;
+  kind: 'assign';
+  coil: '=' | 'S' | 'R' | 'SP' | 'SE' | 'SD' | 'SS' | 'SF' | 'CU' | 'CD' | 'SC' | 'SAVE';
+  operand: string;
+  value: string | null;
+  input: FbdNode;
+}
+
+export interface FbdJump {
+  /** The LAD element's id; AND boxes get '&1', '&2' ... */
+  id: string;
+  kind: 'jump';
+  negated: boolean;
+  label: string;
+  input: FbdNode;
+}
+
+export interface FbdReturn {
+  /** The LAD element's id; AND boxes get '&1', '&2' ... */
+  id: string;
+  kind: 'ret';
+  input: FbdNode;
+}
+
+export interface FbdOpenDb {
+  /** The LAD element's id; AND boxes get '&1', '&2' ... */
+  id: string;
+  kind: 'opn';
+  block: string;
+  input: FbdNode;
+}
+
+/** The whole rung: `columns` is where the right rail stands, `rows` the rung's height. */
+export interface LadLayout {
+  columns: number;
+  rows: number;
+  cells: LadCell[];
+  parallels: LadRegion[];
+  links: LadLink[];
+  wires: LadWire[];
+}
+
+/** One element (or output target) on the grid; `kind` is the model's `kind`. */
+export interface LadCell {
+  id: string;
+  kind: string;
+  column: number;
+  row: number;
+  width: number;
+  height: number;
+  pins: LadPin[];
+}
+
+/** The rectangle a parallel (OR) occupies; its branches are cells inside it. */
+export interface LadRegion {
+  id: string;
+  column: number;
+  row: number;
+  width: number;
+  height: number;
+}
+
+/** A vertical wire on the left edge of `column`, from `from_row` down to `to_row`. */
+export interface LadLink {
+  column: number;
+  from_row: number;
+  to_row: number;
+}
+
+/** A horizontal wire on `row` filling the cells `from_column` .. `to_column` - 1. */
+export interface LadWire {
+  row: number;
+  from_column: number;
+  to_column: number;
+}
+
+/** Where a box pin meets its wire, with the operand written at it (if any). */
+export interface LadPin {
+  name: string;
+  side: 'left' | 'right';
+  row: number;
+  operand: string | null;
+}
+
+export interface FbdLayout {
+  layers: number;
+  nodes: FbdLayoutNode[];
+  edges: FbdLayoutEdge[];
+}
+
+/**
+ * A box: `title` is what is written in it (`&`, `>=1`, `S_ODT`, `=` ...),
+ * `operand` what is written above it (the coil's bit, the edge memory, the jump label).
+ */
+export interface FbdLayoutNode {
+  id: string;
+  kind: string;
+  title: string;
+  operand: string | null;
+  layer: number;
+  order: number;
+  width: number;
+  height: number;
+  ports: FbdPort[];
+}
+
+export interface FbdLayoutEdge {
+  id: string;
+  source: string;
+  source_port: string;
+  target: string;
+  target_port: string;
+}
+
+/** A pin: `id` is `<node>.<side>.<index>`; `label` the operand written at it. */
+export interface FbdPort {
+  id: string;
+  name: string;
+  side: 'WEST' | 'EAST';
+  index: number;
+  label: string | null;
+  negated: boolean;
+}
