@@ -2,7 +2,7 @@
 
 A network converts when it is one RLO chain ending in assignments or boxes
 (``nasaq.lang.lad.from_stl_rung`` reads it); otherwise it stays STL with a reason
-(:class:`NotConvertible`, codes ``LAD301``..: see ``from_stl_reasons.REASONS``) naming the
+(:class:`NotConvertible`, codes ``LAD302``..: see ``from_stl_reasons.REASONS``) naming the
 instruction and its line. The lifter works on the STL parser's AST, so German and international
 mnemonics, symbols and STEP 7 exports all read the same way; what ``to_stl`` writes
 (``STL_PATTERNS.md``) lifts back to the same model, element ids aside.
@@ -49,21 +49,20 @@ def lift_network(
     title: str = "",
     comment: str = "",
     directions: PinDirections | None = None,
-    line: int = 1,
 ) -> Network | NotConvertible:
     """The network of ``instructions`` (its code items: instructions and labels; a TITLE is
     taken as the title) as a LAD network, or why it stays STL. ``language`` is the mnemonic
-    set (``en``/``de``); ``directions`` says which CALL parameters are outputs; ``line`` is where
-    the network starts (what an empty network's reason points at)."""
+    set (``en``/``de``); ``directions`` says which CALL parameters are outputs. A network
+    without instructions is an empty rung, one of only a label (``M001: NOP 0``, a jump
+    target) an empty rung with that label."""
     for item in instructions:
         if isinstance(item, ast.TitleNode) and not title:
             title = item.text
         if isinstance(item, ast.BadNode):
             return not_convertible("LAD302", item.loc.line, "?")
     steps = to_steps(instructions, language)
-    if not steps:
-        where = instructions[0].loc.line if instructions else line
-        return not_convertible("LAD301", where, "NETWORK")
+    if not steps:  # an empty network: an empty rung, as STEP 7 shows it
+        return Network(title=title, comment=comment)
     return _lift_steps(steps, title, comment, directions)
 
 
@@ -182,7 +181,6 @@ def _block(
             title=title_text,
             comment=comment,
             directions=directions,
-            line=start,
         )
         if isinstance(lifted, Network):
             inner = _inner_label(items, targets)

@@ -2,7 +2,7 @@
 
 STEP 7 Classic shows a network in LAD or FBD only when it is one RLO chain ending in
 assignments or boxes; otherwise the network stays STL and the editor says why. Each reason is a
-catalogue code (``LAD301``..``LAD339`` in ``diagnostics/lad.csv``) whose message names the
+catalogue code (``LAD302``..``LAD327`` in ``diagnostics/lad.csv``) whose message names the
 instruction and its line. :data:`REASONS` explains each one in a line, for the README table
 "which STL constructs convert to LAD/FBD".
 """
@@ -15,7 +15,6 @@ from nasaq.diagnostics import Diagnostic, Span, render
 from nasaq.diagnostics.catalogue import entry
 
 REASONS: dict[str, str] = {
-    "LAD301": "An empty network: a rung needs at least one output.",
     "LAD302": "The network has a syntax error; it is shown as it was typed.",
     "LAD303": "L or T inside the logic chain: a load between bit checks has no LAD element.",
     "LAD304": "A jump label in the middle of the network (a jump into the middle of a rung).",

@@ -69,8 +69,8 @@ class RungReader(BoxReading):
                 raise RefusalError(not_convertible("LAD304", first.line, first.labels[1]))
             self.label = first.labels[0]
             if self.is_nop(first):
-                if len(self.steps) == 1:
-                    self.refuse("LAD301", first)
+                if len(self.steps) == 1:  # ``M001: NOP 0``: a jump target, an empty rung
+                    return self.label, [], []
                 self.i = 1
         start = self.peek()
         assert start is not None

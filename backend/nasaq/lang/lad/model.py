@@ -2,10 +2,10 @@
 
 A LAD network is a *rung*: the power flows from the left rail through ``logic`` (a
 :class:`Series` of elements, where a :class:`Parallel` holds branches that are series again) and
-then into one or more :class:`Output` branches, each with its own optional conditions and one
-final element (a coil, a jump, a box that ends the rung). FBD draws the same tree as boxes: a
-series is an AND box, a parallel an OR box, a negated contact a negated input; see
-``nasaq.lang.lad.fbd`` for the FBD view and the one element LAD lacks (XOR).
+then into its :class:`Output` branches (none yet while the rung is being drawn), each with its
+own optional conditions and one final element (a coil, a jump, a box that ends the rung). FBD
+draws the same tree as boxes: a series is an AND box, a parallel an OR box, a negated contact a
+negated input; see ``nasaq.lang.lad.fbd`` for the FBD view and the one element LAD lacks (XOR).
 
 The model holds structure only: no coordinates (layout is computed, ``layout.py``), operands as
 the user wrote them (``"Start"``, ``I 0.0``, ``#count``, ``DB5.DBX 2.1``), which the STL compiler
@@ -175,6 +175,10 @@ class Network(BaseModel):
     """One network: a rung (LAD; FBD shows the same tree), an optional jump label at its
     start (``LABEL``), its title and comment.
 
+    A rung being drawn may have no outputs yet: an empty rung (a new network; it lowers to an
+    empty network, or to the label's ``NOP 0``) or logic still waiting for its coil, which the
+    lowering reports (LAD211) as TIA Portal reports an unfinished network at compile time.
+
     A network without LAD shape stays STL, as in STEP 7's LAD view of an STL block: ``stl``
     holds its instructions as written (label included) and ``stl_reason`` the code of the
     reason it does not convert (``LAD3xx``); it then has no logic and no outputs."""
@@ -191,8 +195,6 @@ class Network(BaseModel):
 
     @model_validator(mode="after")
     def _rung_or_stl(self) -> Network:
-        if self.stl is None and not self.outputs:
-            raise ValueError("a LAD network needs at least one output")
         if self.stl is not None and (self.outputs or self.logic.elements):
             raise ValueError("an STL network has no rung")
         return self

@@ -341,19 +341,20 @@ class LadReader:
         return Network(title=title, comment=comment, label=label, stl=body, stl_reason=reason)
 
     def rung(self) -> tuple[Series, list[Output]] | None:
-        """RUNG ... END_RUNG; None (reported) when the rung has no output."""
+        """RUNG ... END_RUNG; None (reported) when it is broken. A rung whose items do not end
+        in a final element is being drawn: all of them are logic and it has no outputs yet."""
         scan = self.scan
         scan.word()
-        reported = len(scan.diagnostics)
         items = self.series(frozenset({"OUTPUTS", "END_RUNG"}))
-        outputs: list[Output] | None = None
-        logic = Series()
+        outputs: list[Output] | None = []
         if scan.peek_word() == "OUTPUTS":
             logic = self.logic(items, "LAD118")
             outputs = self.outputs()
         elif items and items[-1].is_final:
             logic = self.logic(items[:-1], "LAD118")
             outputs = [Output(target=_final(items[-1].node))]
+        else:
+            logic = self.logic(items, "LAD118")
         if scan.peek_word() != "END_RUNG":
             if scan.at_end():
                 scan.report("LAD129", construct="a rung")
@@ -361,14 +362,11 @@ class LadReader:
                 scan.report("LAD109", found=scan.found())
                 scan.skip_to(_NETWORK_SYNC)
             return None
-        if outputs is None and len(scan.diagnostics) == reported:  # else a dropped element
-            scan.report("LAD120")
         scan.word()
         return None if outputs is None else (logic, outputs)
 
     def outputs(self) -> list[Output] | None:
         scan = self.scan
-        at = scan.where()
         scan.word()
         outputs: list[Output] = []
         failed = False
@@ -396,9 +394,7 @@ class LadReader:
                 if scan.at_end() or word in _NETWORK_SYNC or word == "END_RUNG":
                     break
                 scan.skip_to(frozenset({"BRANCH", "END_OUTPUTS", "END_RUNG"}) | _NETWORK_SYNC)
-        if not outputs and not failed:
-            scan.report("LAD120", at)
-        return outputs if outputs and not failed else None
+        return None if failed else outputs  # no branch yet: a rung being drawn
 
     def expect_end(self, word: str) -> None:
         if self.scan.peek_word() == word:

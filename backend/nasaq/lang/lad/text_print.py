@@ -176,9 +176,15 @@ class _Printer:
         for element in network.logic.elements:
             self.element(element, 1)
         outputs = network.outputs
-        if len(outputs) == 1 and not outputs[0].conditions.elements:
+        logic = network.logic.elements
+        if not outputs and logic and isinstance(logic[-1], Box):
+            # A rung being drawn that ends in a box: without the empty OUTPUTS the reader
+            # would take the box for the rung's final element.
+            self.emit(1, "OUTPUTS")
+            self.emit(1, "END_OUTPUTS")
+        elif len(outputs) == 1 and not outputs[0].conditions.elements:
             self.element(outputs[0].target, 1)
-        else:
+        elif outputs:
             self.emit(1, "OUTPUTS")
             for output in outputs:
                 self.branch(output.conditions, output.target, 2)

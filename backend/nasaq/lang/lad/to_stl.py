@@ -36,6 +36,7 @@ from nasaq.lang.lad.model import (
     StatusContact,
 )
 from nasaq.lang.lad.to_stl_boxes import lower_box, needs_whole_flow
+from nasaq.lang.lad.to_stl_unfilled import without_unfilled
 
 _TIMER_COILS = ("SP", "SE", "SD", "SS", "SF")
 _ENDS = {"OB": "ORGANIZATION_BLOCK", "FB": "FUNCTION_BLOCK", "FC": "FUNCTION"}
@@ -72,11 +73,12 @@ class LabelMaker:
         self.temps_needed = max(self.temps_needed, index + 1)
         return f"#{self.temp_prefix}{index}"
 
-    def report(self, code: str, element: str, **params: object) -> None:
+    def report(self, code: str, element: str | None, **params: object) -> None:
+        """A problem of the network being lowered; ``element`` None: of the whole network."""
         span = Span(network=self.network)
-        self.diagnostics.append(
-            render(code, span, network=self.network, element=element or "?", **params)
-        )
+        if element is not None:
+            params["element"] = element or "?"
+        self.diagnostics.append(render(code, span, network=self.network, **params))
 
 
 class NetworkLowering:
@@ -98,7 +100,7 @@ class NetworkLowering:
         self.temps += 1
         return name
 
-    def report(self, code: str, element: str, **params: object) -> None:
+    def report(self, code: str, element: str | None, **params: object) -> None:
         self.labels.report(code, element, **params)
 
     def bool_input(self, value: str | Series, started: bool) -> bool:
@@ -251,7 +253,13 @@ class NetworkLowering:
         return True
 
     def network(self, network: Network) -> list[str]:
-        self.outputs(network.logic, network.outputs)
+        """The network's lines: an empty rung has none (as in STEP 7), a rung still waiting
+        for its output none either (LAD211), its label aside."""
+        rung = without_unfilled(network, self.report)
+        if not network.outputs and network.logic.elements:
+            self.report("LAD211", None)
+        if rung.outputs:
+            self.outputs(rung.logic, rung.outputs)
         if network.label:
             first = self.lines[0].lstrip() if self.lines else "NOP   0"
             self.lines[:1] = [f"{network.label + ':':<5} {first}"]

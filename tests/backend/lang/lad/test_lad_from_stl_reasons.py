@@ -8,10 +8,11 @@ from lad_from_stl_build import lift
 
 from nasaq.diagnostics.catalogue import entry
 from nasaq.lang.lad.from_stl import REASONS, NotConvertible, lift_block, lift_network
+from nasaq.lang.lad.model import LadBlock, Network
+from nasaq.lang.lad.to_stl import block_to_stl
 
 # code -> (network body, the instruction the reason names)
 CASES: dict[str, tuple[str, str]] = {
-    "LAD301": ("M001: NOP 0", "NOP 0"),
     "LAD303": ("A I 0.0\nL MW 10\n= Q 4.0", "L MW 10"),
     "LAD304": ("A I 0.0\nM001: A I 0.1\n= Q 4.0", "M001"),
     "LAD305": ("A I 0.0\nX I 0.1\n= Q 4.0", "X I 0.1"),
@@ -84,10 +85,28 @@ def test_a_syntax_error_in_the_network_is_a_reason() -> None:
     assert codes[-1] == "LAD302"
 
 
-def test_an_empty_item_list_is_an_empty_network() -> None:
-    lifted = lift_network([])
-    assert isinstance(lifted, NotConvertible)
-    assert lifted.code == "LAD301"
+def test_an_empty_item_list_is_an_empty_rung() -> None:
+    assert lift_network([]) == Network()
+
+
+def test_an_empty_network_lifts_to_an_empty_rung_and_a_lone_label_keeps_its_label() -> None:
+    """As STEP 7 shows them: an empty STL network is an empty LAD network, and ``M001: NOP 0``
+    (a jump target) an empty network with the label, which lowers back to the same line. A
+    ``NOP 0`` without a label is an instruction with no LAD element."""
+    text = (
+        "ORGANIZATION_BLOCK OB 1\nBEGIN\nNETWORK\nTITLE = nothing yet\nNETWORK\nM001: NOP 0\n"
+        "NETWORK\nNOP 0\nEND_ORGANIZATION_BLOCK\n"
+    )
+    empty, labelled, nop = lift_block(text, "empty.awl").blocks[0].networks
+    assert empty == Network(title="nothing yet")
+    assert labelled == Network(label="M001")
+    assert isinstance(nop, NotConvertible)
+    assert nop.code == "LAD310"
+    lowered, problems = block_to_stl(LadBlock(kind="OB", name="OB 1", networks=[empty, labelled]))
+    assert problems == []
+    assert lowered.split("BEGIN\n")[1] == (
+        "NETWORK\nTITLE = nothing yet\nNETWORK\nTITLE =\nM001: NOP   0\nEND_ORGANIZATION_BLOCK\n"
+    )
 
 
 def test_a_jump_from_another_network_into_a_box_label_keeps_the_network_stl() -> None:

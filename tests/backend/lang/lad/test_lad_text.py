@@ -262,7 +262,11 @@ def test_a_file_with_two_blocks() -> None:
     blocks, problems = parse_lad(text, "two.lad")
     assert [(b.kind, b.name) for b in blocks] == [("FC", "FC 10"), ("OB", "OB 1")]
     assert [p.code for p in problems] == ["LAD110"]
-    assert blocks[1].networks == [Network(outputs=[Output(target=Box(id="e1", name="FC 10"))])]
+    # The unknown element is dropped; its rung stays, empty.
+    assert blocks[1].networks == [
+        Network(),
+        Network(outputs=[Output(target=Box(id="e1", name="FC 10"))]),
+    ]
     again, problems = parse_lad(print_lad(blocks), "two.lad")
     assert problems == []
     assert again == blocks
@@ -276,6 +280,83 @@ def test_explicit_ids_are_kept_and_clashes_reported() -> None:
     assert [e.id for e in network.logic.elements] == ["start", "e2"]
     assert [(p.code, p.span.line, p.span.column) for p in problems if p.span] == [("LAD123", 4, 44)]
     assert problems[0].params == {"id": "e2"}
+
+
+# ---- rungs being drawn ------------------------------------------------------------------------
+
+UNFINISHED = """\
+ORGANIZATION_BLOCK OB 1
+BEGIN
+NETWORK
+TITLE = New
+RUNG
+END_RUNG
+NETWORK
+LABEL M001
+RUNG
+END_RUNG
+NETWORK
+RUNG
+  Contact(I 0.0)
+  PARALLEL
+    BRANCH Contact(<??.?>) END_BRANCH
+    BRANCH ContactNC(M 0.1) END_BRANCH
+  END_PARALLEL
+END_RUNG
+NETWORK
+RUNG
+  Contact(I 0.0)
+  Box(MOVE, IN := <???>, OUT => MW 2)
+  OUTPUTS
+  END_OUTPUTS
+END_RUNG
+NETWORK
+RUNG
+  Box(ADD_I, IN1 := MW 0, IN2 := 1, OUT => MW 0)
+END_RUNG
+END_ORGANIZATION_BLOCK
+"""
+
+
+def test_empty_and_unfinished_rungs_read_and_print_back_the_same() -> None:
+    """A new network is an empty rung; contacts placed before their coil are logic without
+    outputs. Both read without a problem and print back as they were, so an editor can save
+    a network in any state (a rung ending in a box keeps its empty OUTPUTS, else the box
+    would read back as the rung's final element)."""
+    [block], problems = parse_lad(UNFINISHED, "draft.lad")
+    assert problems == []
+    empty, labelled, contacts, box_logic, box_final = block.networks
+    assert empty == Network(title="New")
+    assert labelled == Network(label="M001")
+    assert contacts.outputs == []
+    assert [e.kind for e in contacts.logic.elements] == ["contact", "parallel"]
+    placeholder = contacts.logic.elements[1]
+    assert isinstance(placeholder, Parallel)
+    assert placeholder.branches[0].elements == [Contact(id="e3", operand="<??.?>")]
+    assert box_logic.outputs == []
+    assert [e.kind for e in box_logic.logic.elements] == ["contact", "box"]
+    assert box_final.logic.elements == []
+    assert [o.target.kind for o in box_final.outputs] == ["box"]
+    assert print_lad([block]) == UNFINISHED
+    assert reference().parse(UNFINISHED)
+
+
+def test_an_empty_outputs_section_is_a_rung_without_outputs() -> None:
+    text = "FUNCTION FC 1 : VOID\nBEGIN\nNETWORK\nRUNG Contact(I 0.0) OUTPUTS END_OUTPUTS "
+    text += "END_RUNG\nEND_FUNCTION\n"
+    [block], problems = parse_lad(text, "draft.lad")
+    assert problems == []
+    [network] = block.networks
+    assert network.outputs == []
+    assert network.logic.elements == [Contact(id="e1", operand="I 0.0")]
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(0, 10_000))
+def test_random_rungs_without_their_outputs_survive_print_and_parse(seed: int) -> None:
+    network = RandomNetworks(seed).network().model_copy(update={"outputs": []})
+    block = numbered(LadBlock(kind="FC", name="FC 3", return_type="VOID", networks=[network]))
+    assert round_trip([block]) == [block]
 
 
 # ---- errors --------------------------------------------------------------------------------
@@ -308,7 +389,6 @@ BROKEN = [
         4,
         22,
     ),
-    ("RUNG Contact(I 0.0) END_RUNG", "LAD120", 4, 21),
     (
         "RUNG Contact(I 0.0) OUTPUTS BRANCH Contact(I 0.1) END_BRANCH END_OUTPUTS END_RUNG",
         "LAD121",

@@ -13,6 +13,7 @@ from nasaq.lang.lad.boxes import CATALOGUE
 from nasaq.lang.lad.model import (
     Box,
     Coil,
+    Contact,
     EdgeContact,
     Invert,
     Midline,
@@ -149,3 +150,103 @@ def test_every_box_with_all_pins_lowers_to_compilable_stl(name: str) -> None:
     assert all(d.code in ("LAD203",) for d in diagnostics), diagnostics
     result = compile_sources([SourceFile("all.awl", text)])
     assert [d.message for d in result.diagnostics if d.severity == "error"] == [], text
+
+
+# ---- rungs being drawn ------------------------------------------------------------------------
+
+
+def test_an_empty_rung_lowers_to_an_empty_network() -> None:
+    text, diagnostics = block_to_stl(ob1(Network(), Network(label="M001")))
+    assert diagnostics == []
+    assert text.split("BEGIN\n")[1] == (
+        "NETWORK\nTITLE =\nNETWORK\nTITLE =\nM001: NOP   0\nEND_ORGANIZATION_BLOCK\n"
+    )
+
+
+def test_logic_without_an_output_is_reported_on_its_network_and_lowers_to_nothing() -> None:
+    unfinished = Network(logic=s(c("I 0.0"), par(c("I 0.1"), c("I 0.2"))), label="M002")
+    text, diagnostics = block_to_stl(ob1(net(c("I 1.0")), unfinished))
+    assert [(d.code, d.span.network if d.span else None) for d in diagnostics] == [("LAD211", 2)]
+    assert diagnostics[0].message == (
+        "Network 2: the rung has no output yet (a coil, a jump, RET, OPN or a box at its end)."
+    )
+    assert diagnostics[0].params == {"network": 2}
+    assert "I 0.1" not in text
+    assert "M002: NOP   0" in text  # the label stays a jump target
+    result = compile_sources([SourceFile("draft.awl", text)])
+    assert [d.code for d in result.diagnostics if d.severity == "error"] == []
+
+
+BIT, ANY = "<??.?>", "<???>"
+PLACEHOLDERS = [
+    # (the network, [(element, what, pin)] reported in reading order)
+    (net(Contact(id="x", operand=BIT)), [("x", "bit", None)]),
+    (net(c("I 0.0"), Midline(id="x", operand=BIT)), [("x", "bit", None)]),
+    (net(c("I 0.0"), EdgeContact(id="x", edge="N", memory=ANY)), [("x", "bit", None)]),
+    (net(par(c("I 0.0"), Contact(id="x", operand=" <??.?> "))), [("x", "bit", None)]),
+    (net(c("I 0.0"), outputs=[coil(BIT)]), [("", "bit", None)]),
+    (
+        net(outputs=ends(Coil(id="x", coil="SD", operand=ANY, value="S5T#1S"))),
+        [("x", "timer", None)],
+    ),
+    (net(outputs=ends(Coil(id="x", coil="SD", operand="T 1", value=ANY))), [("x", "value", None)]),
+    (net(outputs=ends(Coil(id="x", coil="CU", operand=ANY))), [("x", "counter", None)]),
+    (net(outputs=ends(OpenDb(id="x", block=ANY))), [("x", "operand", None)]),
+    (
+        net(
+            c("I 0.0"),
+            Box(id="x", name="MOVE", inputs={"IN": ANY}, outputs={"OUT": ANY}),
+        ),
+        [("x", "operand", "IN"), ("x", "operand", "OUT")],
+    ),
+    (net(Box(id="x", name="S_ODT", instance=ANY, inputs={"TV": "S5T#1S"})), [("x", "timer", None)]),
+    (net(Box(id="x", name="S_CU", instance=ANY)), [("x", "counter", None)]),
+    (net(Box(id="x", name="SR", instance=BIT)), [("x", "bit", None)]),
+    (net(c("I 0.0"), Box(id="x", name="FB 5", instance=ANY)), [("x", "operand", None)]),
+    (
+        net(
+            Box(
+                id="x",
+                name="SR",
+                instance="M 0.0",
+                inputs={"R1": s(Contact(id="y", operand=BIT))},
+            )
+        ),
+        [("y", "bit", None)],
+    ),
+]
+
+
+@pytest.mark.parametrize(("network", "expected"), PLACEHOLDERS)
+def test_an_operand_not_filled_in_is_reported_and_its_element_left_out(
+    network: Network, expected: list[tuple[str, str, str | None]]
+) -> None:
+    """``<??.?>`` and ``<???>`` (as an editor writes a new element's operands) are LAD212 on
+    their element; the element is left out, so the STL never holds a placeholder and the rest
+    still compiles."""
+    text, diagnostics = block_to_stl(ob1(net(c("I 1.0")), network))
+    found = [
+        (d.params["element"], d.params["what"], d.params.get("pin"))
+        for d in diagnostics
+        if d.code == "LAD212"
+    ]
+    assert found == [(e or "?", what, pin) for e, what, pin in expected]
+    assert all(d.span is not None and d.span.network == 2 for d in diagnostics)
+    assert "<" not in text.split("BEGIN")[1]
+    result = compile_sources([SourceFile("draft.awl", text)])
+    assert [d.message for d in result.diagnostics if d.severity == "error"] == [], text
+
+
+def test_a_placeholder_in_a_parallel_leaves_the_other_branches() -> None:
+    network = net(c("I 0.0"), par(c("I 0.1"), Contact(id="x", operand=BIT), c("I 0.2")))
+    text, diagnostics = block_to_stl(ob1(network))
+    assert [d.code for d in diagnostics] == ["LAD212"]
+    body = [line.split() for line in text.split("BEGIN\n")[1].splitlines()[2:-1]]
+    assert body == [
+        ["A", "I", "0.0"],
+        ["A("],
+        ["O", "I", "0.1"],
+        ["O", "I", "0.2"],
+        [")"],
+        ["=", "Q", "4.0"],
+    ]
