@@ -15,7 +15,15 @@ type Fields<T> = Record<keyof Required<T>, true>;
 const health: Fields<Health> = { status: true, version: true, database: true };
 const project: Fields<Project> = { id: true, name: true, description: true, created_at: true, updated_at: true };
 const projectCreate: Fields<ProjectCreate> = { name: true, description: true };
-const span: Fields<Span> = { file: true, line: true, column: true, end_line: true, end_column: true, network: true };
+const span: Fields<Span> = {
+  file: true,
+  line: true,
+  column: true,
+  end_line: true,
+  end_column: true,
+  network: true,
+  element: true,
+};
 const apiProblem: Fields<ApiProblem> = {
   code: true,
   severity: true,

@@ -15,7 +15,8 @@ class Severity(StrEnum):
 
 
 class Span(BaseModel):
-    """Where a problem sits: a source file position (1-based) and, for diagrams, a network."""
+    """Where a problem sits: a source file position (1-based) and, for diagrams, a network and
+    the element in it."""
 
     file: str | None = None
     line: int | None = Field(default=None, ge=1)
@@ -23,6 +24,9 @@ class Span(BaseModel):
     end_line: int | None = Field(default=None, ge=1)
     end_column: int | None = Field(default=None, ge=1)
     network: int | None = Field(default=None, ge=1)
+    element: str | None = Field(
+        default=None, description="The LAD/FBD element id in its network (e1, e2 ...)"
+    )
 
 
 class Diagnostic(BaseModel):

@@ -54,7 +54,8 @@ export type Severity = 'error' | 'warning' | 'info';
 
 /**
  * Where a problem sits (backend `nasaq.diagnostics.Span`): a 1-based source position and, for
- * LAD/FBD/Graph, a network. Every part is optional; a project-wide problem has no span at all.
+ * LAD/FBD/Graph, a network and the element in it. Every part is optional; a project-wide
+ * problem has no span at all.
  */
 export interface Span {
   file?: string | null;
@@ -63,6 +64,8 @@ export interface Span {
   end_line?: number | null;
   end_column?: number | null;
   network?: number | null;
+  /** The LAD/FBD element id in its network (`e1`, `e2` ...). */
+  element?: string | null;
 }
 
 /** A compiler or simulator finding (backend `nasaq.diagnostics.Diagnostic`). */

@@ -236,7 +236,15 @@ def test_check_places_a_lad_problem_on_its_line_and_network(client: TestClient) 
     (problem,) = client.post(url, json={"name": "OB1.lad", "text": typing}).json()["diagnostics"]
     assert problem["code"] == "STL205"  # the unknown symbol, found in the generated STL
     assert (problem["span"]["file"], problem["span"]["line"]) == ("OB1.lad", 4)
-    assert problem["span"]["network"] == 1
+    assert (problem["span"]["network"], problem["span"]["element"]) == (1, "e5")
+    word = LATCH_LAD.replace("ContactNC(I 0.1)", "ContactNC(MW 10)")
+    (problem,) = client.post(url, json={"name": "OB1.lad", "text": word}).json()["diagnostics"]
+    assert problem["code"] == "STL204"  # a word on a contact: on that contact
+    assert (problem["span"]["network"], problem["span"]["element"]) == (1, "e4")
+    unfilled = LATCH_LAD.replace("ContactNC(I 0.1)", "ContactNC(<??.?>)")
+    (problem,) = client.post(url, json={"name": "OB1.lad", "text": unfilled}).json()["diagnostics"]
+    assert problem["code"] == "LAD212"  # the lowering's own problems name their element too
+    assert (problem["span"]["network"], problem["span"]["element"]) == (1, "e4")
     broken = LATCH_LAD.replace("ContactNC(I 0.1)", "ContactNC(I 0.1")
     (problem,) = client.post(url, json={"name": "OB1.lad", "text": broken}).json()["diagnostics"]
     assert problem["code"] == "LAD111"  # "',' or ')' expected, found 'Coil'": the text's own

@@ -2,11 +2,12 @@
 generated line came from.
 
 The STL compiler takes a ``.lad``/``.fbd`` file like an STL source whose text is the lowering of
-its blocks (``to_stl.block_to_stl``), so LAD blocks call and are called by STL and SCL blocks,
+its blocks (``to_stl.lower_block``), so LAD blocks call and are called by STL and SCL blocks,
 share the symbol table and run on the CPU unchanged. A problem the STL compiler finds in that
 text (an unknown symbol, a wrong operand type) is moved back to the LAD file: to the line of the
-network it belongs to, with the network number, since the generated line means nothing to the
-user.
+network it belongs to, with the network number and the element id, since the generated line
+means nothing to the user. The same element ids go on the instructions (``ir.Origin.element``)
+for monitoring.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ from dataclasses import dataclass, field
 
 from nasaq.diagnostics import Diagnostic
 from nasaq.lang.lad.text import parse_lad
-from nasaq.lang.lad.to_stl import block_to_stl
+from nasaq.lang.lad.to_stl import lower_block
 
 _NETWORK = re.compile(r"^[ \t]*NETWORK\b", re.IGNORECASE | re.MULTILINE)
 _BLOCK_START = re.compile(
@@ -33,12 +34,18 @@ class LoweredFile:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     # Generated line (1-based) -> (LAD line, network number or None).
     origins: list[tuple[int, int | None]] = field(default_factory=list)
+    # Generated line (1-based) -> the element id in its network, or None; aligned with origins.
+    elements: list[str | None] = field(default_factory=list)
 
     def place(self, line: int) -> tuple[int, int | None]:
         """The LAD line and network of a generated STL line."""
         if 1 <= line <= len(self.origins):
             return self.origins[line - 1]
         return (1, None)
+
+    def element(self, line: int) -> str | None:
+        """The element a generated STL line belongs to."""
+        return self.elements[line - 1] if 1 <= line <= len(self.elements) else None
 
 
 def _starts(pattern: re.Pattern[str], text: str) -> list[int]:
@@ -53,8 +60,11 @@ def lower_file(name: str, text: str) -> LoweredFile:
     lad_networks = _starts(_NETWORK, text)
     out: list[str] = []
     origins: list[tuple[int, int | None]] = []
+    elements: list[str | None] = []
     for number, block in enumerate(blocks):
-        stl, problems = block_to_stl(block)
+        lowered = lower_block(block)
+        stl, problems = lowered.text, lowered.diagnostics
+        elements += lowered.elements
         for problem in problems:
             span = problem.span
             if span is not None and span.file is None:
@@ -75,14 +85,22 @@ def lower_file(name: str, text: str) -> LoweredFile:
             else:
                 origins.append((network_lines[seen - 1], seen))
         out += lines
-    return LoweredFile("\n".join(out) + "\n", diagnostics, origins)
+    return LoweredFile("\n".join(out) + "\n", diagnostics, origins, elements)
 
 
 def moved_to_lad(diagnostic: Diagnostic, lowered: LoweredFile) -> Diagnostic:
-    """A diagnostic about the generated STL, placed on the LAD file's network instead."""
+    """A diagnostic about the generated STL, placed on the LAD file's network and on the
+    element the generated line belongs to instead."""
     span = diagnostic.span
     if span is None or span.line is None:
         return diagnostic
     line, network = lowered.place(span.line)
-    update = {"line": line, "column": 1, "end_line": line, "end_column": None, "network": network}
+    update = {
+        "line": line,
+        "column": 1,
+        "end_line": line,
+        "end_column": None,
+        "network": network,
+        "element": lowered.element(span.line),
+    }
     return diagnostic.model_copy(update={"span": span.model_copy(update=update)})

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
 
 from nasaq.diagnostics import Diagnostic, Span, render
 from nasaq.lang.lad.model import (
@@ -75,7 +76,7 @@ class LabelMaker:
 
     def report(self, code: str, element: str | None, **params: object) -> None:
         """A problem of the network being lowered; ``element`` None: of the whole network."""
-        span = Span(network=self.network)
+        span = Span(network=self.network, element=element or None)
         if element is not None:
             params["element"] = element or "?"
         self.diagnostics.append(render(code, span, network=self.network, **params))
@@ -83,17 +84,34 @@ class LabelMaker:
 
 class NetworkLowering:
     """The STL of one network; the chain helpers return whether a chain has started (an RLO is
-    being built), which decides ``A`` vs. brackets, ``JNB`` vs. nothing, ``JC`` vs. ``JU``."""
+    being built), which decides ``A`` vs. brackets, ``JNB`` vs. nothing, ``JC`` vs. ``JU``.
+
+    ``elements`` names, per line, the element the line belongs to (its ``owner`` when it was
+    emitted): monitoring reads an element's status from its lines, and a problem the STL
+    compiler finds on a line is placed on its element. Lines the lowering adds for the network
+    as a whole (the temporary that carries the common logic to several outputs) have None."""
 
     def __init__(self, labels: LabelMaker) -> None:
         self.labels = labels
         self.lines: list[str] = []
+        self.elements: list[str | None] = []
+        self.owner: str | None = None
         self.temps = 0
 
     # -- primitives used by the box lowering ------------------------------------------------------
 
     def emit(self, op: str, operand: str = "", label: str | None = None) -> None:
         self.lines.append(stl_line(op, operand, label))
+        self.elements.append(self.owner)
+
+    def own(self, element_id: str) -> str | None:
+        """Makes the element the owner of the lines emitted next and returns the owner to
+        restore; an element without an id (a temporary the lowering reads as a contact) keeps
+        the owner it stands in."""
+        previous = self.owner
+        if element_id:
+            self.owner = element_id
+        return previous
 
     def temp(self) -> str:
         name = self.labels.temp(self.temps)
@@ -114,12 +132,21 @@ class NetworkLowering:
 
     def chain(self, elements: Sequence[Element], started: bool) -> bool:
         if not started and len(elements) == 1 and isinstance(elements[0], Parallel):
-            return self.parallel(elements[0], None)
+            previous = self.own(elements[0].id)
+            self.parallel(elements[0], None)
+            self.owner = previous
+            return True
         for element in elements:
             started = self.element(element, started)
         return started
 
     def element(self, element: Element, started: bool) -> bool:
+        previous = self.own(element.id)
+        started = self.lower_element(element, started)
+        self.owner = previous
+        return started
+
+    def lower_element(self, element: Element, started: bool) -> bool:
         if isinstance(element, Contact | StatusContact):
             operand = element.operand if isinstance(element, Contact) else element.bit
             self.emit("AN" if element.negated else "A", operand)
@@ -170,7 +197,9 @@ class NetworkLowering:
     def element_or(self, element: Element) -> None:
         assert isinstance(element, Contact | StatusContact)
         operand = element.operand if isinstance(element, Contact) else element.bit
+        previous = self.own(element.id)
         self.emit("ON" if element.negated else "O", operand)
+        self.owner = previous
 
     # -- outputs ------------------------------------------------------------------------------
 
@@ -209,10 +238,18 @@ class NetworkLowering:
     def open_db(self, target: OpenDb, flow: Sequence[Element]) -> None:
         if flow:
             self.report("LAD207", target.id)
+        previous = self.own(target.id)
         self.emit("OPN", target.block)
+        self.owner = previous
 
     def target(self, target: Final, started: bool) -> bool:
         """Emits a rung's end; returns whether the RLO is still the chain's (a coil keeps it)."""
+        previous = self.own(target.id)
+        started = self.lower_target(target, started)
+        self.owner = previous
+        return started
+
+    def lower_target(self, target: Final, started: bool) -> bool:
         if isinstance(target, Box):
             lower_box(self, target, started, in_chain=False)
             return False
@@ -263,6 +300,7 @@ class NetworkLowering:
         if network.label:
             first = self.lines[0].lstrip() if self.lines else "NOP   0"
             self.lines[:1] = [f"{network.label + ':':<5} {first}"]
+            self.elements[:1] = self.elements[:1] or [None]
         return self.lines
 
 
@@ -274,13 +312,16 @@ def _in_and_group(element: Element) -> bool:
     return isinstance(element, Contact | StatusContact)
 
 
-def network_to_stl(network: Network, labels: LabelMaker) -> list[str]:
-    """The STL lines of one network (without the ``NETWORK``/``TITLE`` header). Problems go to
-    ``labels.diagnostics``; ``labels.network`` is the network's number for them. A network
-    that stayed STL (``Network.stl``) is its own lines."""
+def network_to_stl(network: Network, labels: LabelMaker) -> tuple[list[str], list[str | None]]:
+    """The STL lines of one network (without the ``NETWORK``/``TITLE`` header) and the element
+    each line belongs to. Problems go to ``labels.diagnostics``; ``labels.network`` is the
+    network's number for them. A network that stayed STL (``Network.stl``) is its own lines,
+    of no element."""
     if network.stl is not None:
-        return network.stl.split("\n") if network.stl else []
-    return NetworkLowering(labels).network(network)
+        lines = network.stl.split("\n") if network.stl else []
+        return lines, [None] * len(lines)
+    lowering = NetworkLowering(labels)
+    return lowering.network(network), lowering.elements
 
 
 _STL_LABEL = re.compile(r"^[ \t]*([A-Za-z_]\w*)[ \t]*:(?!=)", re.MULTILINE)
@@ -310,27 +351,63 @@ def _header(block: LadBlock) -> str:
     return f"{_ENDS[block.kind]} {block.name}"
 
 
-def block_to_stl(block: LadBlock) -> tuple[str, list[Diagnostic]]:
+@dataclass(slots=True)
+class LoweredBlock:
+    """A block's STL source, the problems found while lowering it, and per line of ``text``
+    the LAD/FBD element it belongs to (None: the block's frame, headers, kept STL)."""
+
+    text: str
+    diagnostics: list[Diagnostic]
+    elements: list[str | None]
+
+
+class _Source:
+    """Lines of the generated source with the element of each (text may hold several lines)."""
+
+    def __init__(self) -> None:
+        self.lines: list[str] = []
+        self.elements: list[str | None] = []
+
+    def add(self, text: str) -> None:
+        parts = text.split("\n")
+        self.lines += parts
+        self.elements += [None] * len(parts)
+
+
+def lower_block(block: LadBlock) -> LoweredBlock:
     """A complete STL source of the block (header, the declarations as they are, temporaries,
-    networks) for ``compile_sources``, and the problems found while lowering."""
+    networks) for ``compile_sources``, the problems found while lowering, and the element of
+    each line."""
     labels = LabelMaker(_labels_taken(block), _temp_prefix(block.declarations))
-    body: list[str] = []
+    body = _Source()
     for number, network in enumerate(block.networks, start=1):
         labels.network = number
-        body.append("NETWORK")
-        body.append(f"TITLE = {network.title}".rstrip())
-        body.extend(f"//{line}" for line in network.comment.splitlines())
-        body.extend(network_to_stl(network, labels))
-    lines = [_header(block)]
+        body.add("NETWORK")
+        body.add(f"TITLE = {network.title}".rstrip())
+        for line in network.comment.splitlines():
+            body.add(f"//{line}")
+        lines, elements = network_to_stl(network, labels)
+        body.lines += lines
+        body.elements += elements
+    out = _Source()
+    out.add(_header(block))
     if block.title:
-        lines.append(f"TITLE = {block.title}")
+        out.add(f"TITLE = {block.title}")
     if block.declarations.strip():
-        lines.append(block.declarations.rstrip("\n"))
+        out.add(block.declarations.rstrip("\n"))
     if labels.temps_needed:
-        lines.append("VAR_TEMP")
-        lines.extend(f"  {labels.temp_prefix}{i} : BOOL;" for i in range(labels.temps_needed))
-        lines.append("END_VAR")
-    lines.append("BEGIN")
-    lines.extend(body)
-    lines.append(f"END_{_ENDS[block.kind]}")
-    return "\n".join(lines) + "\n", labels.diagnostics
+        out.add("VAR_TEMP")
+        for index in range(labels.temps_needed):
+            out.add(f"  {labels.temp_prefix}{index} : BOOL;")
+        out.add("END_VAR")
+    out.add("BEGIN")
+    out.lines += body.lines
+    out.elements += body.elements
+    out.add(f"END_{_ENDS[block.kind]}")
+    return LoweredBlock("\n".join(out.lines) + "\n", labels.diagnostics, out.elements)
+
+
+def block_to_stl(block: LadBlock) -> tuple[str, list[Diagnostic]]:
+    """The block's STL source and the problems found while lowering it (``lower_block``)."""
+    lowered = lower_block(block)
+    return lowered.text, lowered.diagnostics

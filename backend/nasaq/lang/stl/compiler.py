@@ -64,6 +64,8 @@ class _File:
     parsed: ParseResult
     lines: list[str]
     language: str = "en"
+    # A LAD/FBD file: the element id of each line of its generated STL (``Origin.element``).
+    elements: list[str | None] | None = None
 
 
 def decode(text: str | bytes) -> str:
@@ -214,7 +216,7 @@ class _Compiler:
         self.diagnostics += [moved_to_lad(found, lowered) for found in parsed.diagnostics]
         if not parsed.source.blocks and not lowered.diagnostics:
             self.diagnostics.append(problem("STL112", source.name, where, file=source.name))
-        file = _File(source.name, parsed, lowered.stl.split("\n"))
+        file = _File(source.name, parsed, lowered.stl.split("\n"), elements=lowered.elements)
         file.language = _language(file, self.mnemonics)
         self.files.append(file)
 
@@ -325,7 +327,8 @@ class _Compiler:
         block.temp_bytes = info.temp_bits // 8
         scope = Scope(self.index, info, info.language, self.test_ops)
         shared = self.shared.setdefault(info.language, {})
-        lowered = CodeLowerer(scope, file.lines, self.auto, shared).lower(info.node.code)
+        lowerer = CodeLowerer(scope, file.lines, self.auto, shared, file.elements)
+        lowered = lowerer.lower(info.node.code)
         apply_code(block, lowered)
         self.lowered[(info.kind, info.number)] = lowered
         self.diagnostics += scope.diagnostics

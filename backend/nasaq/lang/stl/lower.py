@@ -97,9 +97,12 @@ class CodeLowerer:
         lines: list[str],
         auto: dict[int, AutoInstance],
         shared: Shared | None = None,
+        elements: list[str | None] | None = None,
     ) -> None:
         self.scope = scope
         self.lines = lines
+        # The LAD/FBD element of each source line (a LAD file's generated STL), else None.
+        self.elements = elements
         self.resolver = Resolver(scope)
         self.calls = CallLowerer(scope, self.resolver, auto)
         self.out = LoweredCode()
@@ -129,6 +132,7 @@ class CodeLowerer:
         shared = self._shared.get
         append = self.out.code.append
         new = object.__new__
+        elements = self.elements
         for item in items:
             if type(item) is not ast.InstrNode or item.param_line:
                 if type(item) is ast.LabelNode and pending is None and self.last_call is None:
@@ -141,7 +145,9 @@ class CodeLowerer:
             where = item.loc
             if where is not self._last_where:  # the instructions of an SCL statement share one
                 network = len(self.out.networks) or 1
-                self._last_origin = Origin(self._file, where.line, where.column, network)
+                element = None if elements is None else _element_of(elements, where.line)
+                origin = Origin(self._file, where.line, where.column, network, element)
+                self._last_origin = origin
                 self._last_where = where
             origin = self._last_origin
             operands = item.operands
@@ -483,6 +489,10 @@ def apply_code(block: Block, lowered: LoweredCode) -> None:
     block.code = lowered.code
     block.networks = lowered.networks
     block.labels = lowered.labels
+
+
+def _element_of(elements: list[str | None], line: int) -> str | None:
+    return elements[line - 1] if 0 < line <= len(elements) else None
 
 
 __all__ = ["CodeLowerer", "ConstType", "Jump", "LoweredCode", "apply_code"]
