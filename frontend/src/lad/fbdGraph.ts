@@ -9,7 +9,9 @@
  * `flow` of an OR box feeds the first pin of each of its branches. Layers come from the longest
  * path to an output (final boxes in the last layer); within a layer nodes are ordered by first
  * visit, walking the outputs and each box's inputs top-down, so a network always gives the same
- * layout. The walk tells nodes apart by object identity, as the Python walk does by `id()`.
+ * layout. A network being drawn without outputs ends at its common logic, the last layer (a lone
+ * operand is a node without a box, its text and negation on its output port); an empty one has no
+ * nodes. The walk tells nodes apart by object identity, as the Python walk does by `id()`.
  */
 import { flowPins } from './boxes';
 import type { FbdFinal, FbdLayout, FbdLayoutEdge, FbdLayoutNode, FbdLogic, FbdNetwork, FbdNode, FbdPort } from './model';
@@ -42,6 +44,11 @@ function inputsOf(node: Node): Pin[] {
 /** The node's output pins, each with the operand written at it. */
 function outputsOf(node: Node): [string, string | null][] {
   switch (node.kind) {
+    // An operand is a node only as the lone logic of a network without outputs.
+    case 'operand':
+      return [['OUT', node.operand]];
+    case 'status':
+      return [['OUT', node.bit]];
     case 'box': {
       const flowOut = flowPins(node.name)[1] ?? 'OUT';
       const pins = Object.entries(node.outputs).filter(([name]) => name !== flowOut);
@@ -60,6 +67,9 @@ function outputsOf(node: Node): [string, string | null][] {
 /** What is written in the box. */
 function titleOf(node: Node): string {
   switch (node.kind) {
+    case 'operand':
+    case 'status':
+      return ''; // no box: the operand is written at its output
     case 'logic':
       return TITLES[node.op];
     case 'box':
@@ -208,17 +218,26 @@ function portsAndEdges(walk: Layering, node: Node, name: string): { ports: FbdPo
     }
   });
   const outputs = outputsOf(node);
-  outputs.forEach(([pin, label], index) => ports.push({ id: `${name}.E.${index}`, name: pin, side: 'EAST', index, label, negated: false }));
+  const negated = (node.kind === 'operand' || node.kind === 'status') && node.negated;
+  outputs.forEach(([pin, label], index) => ports.push({ id: `${name}.E.${index}`, name: pin, side: 'EAST', index, label, negated }));
   return { ports, edges, outputs: outputs.length };
 }
 
+/** Whether `node` is the empty series: an AND without inputs, always true (the rail). */
+function isRail(node: FbdNode): boolean {
+  return node.kind === 'logic' && node.op === 'AND' && node.inputs.length === 0 && node.flow === null;
+}
+
 /**
- * The layered graph of one FBD network (see above for the rules); none for a network kept as STL.
+ * The layered graph of one FBD network (see above for the rules); none for a network kept as STL
+ * or an empty one.
  */
 export function fbdLayout(fbd: FbdNetwork): FbdLayout {
   if (fbd.stl !== null) return { layers: 0, nodes: [], edges: [] };
   const walk = new Layering(fbd);
   for (const final of fbd.outputs) walk.visit(final, 0);
+  if (fbd.outputs.length === 0 && !isRail(fbd.logic)) walk.visit(fbd.logic, 0);
+  if (walk.depth.size === 0) return { layers: 0, nodes: [], edges: [] };
   const deepest = Math.max(...walk.depth.values());
   const orders = new Map<number, number>();
   const nodes: FbdLayoutNode[] = [];

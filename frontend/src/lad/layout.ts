@@ -7,8 +7,12 @@
  * need. A series runs left to right on its top row; a parallel stacks its branches downwards, a
  * shorter branch finished by a wire, joined at its edges by links; a box's flow pins are on its top
  * row, then one row per pin, logic wired into a pin drawn left of the box from the pin's row down;
- * the outputs are stacked at the right rail. Every tree node owns a rectangle and places its
+ * the outputs are stacked at the right rail (a rung being drawn without outputs ends at its logic:
+ * an empty rung has no width and one row). Every tree node owns a rectangle and places its
  * children inside it, so nothing overlaps.
+ *
+ * Each wire and link names the power flow it carries, so the editor colours it from a flow map
+ * without walking the tree: `rail` (the left rail), `<id>` (out of element id), `<id>:in` (into it).
  */
 import { flowPins } from './boxes';
 import type { Box, Element, Final, LadCell, LadLayout, LadLink, LadPin, LadRegion, LadWire, Network, Parallel, Series } from './model';
@@ -56,6 +60,11 @@ function boxRows(box: Box): Size {
   return [pinsWidth, Math.max(row, 1 + pinOutputs(box).length)];
 }
 
+/** The flow out of `series` when `into` flows into it: out of its last element. */
+function flowAfter(series: Series, into: string): string {
+  return series.elements[series.elements.length - 1]?.id ?? into;
+}
+
 /** The output pins below the top row: all but the one the power flow leaves by. */
 function pinOutputs(box: Box): [string, string][] {
   const flowOut = flowPins(box.name)[1];
@@ -64,12 +73,12 @@ function pinOutputs(box: Box): [string, string][] {
 
 // --- placing ---------------------------------------------------------------------------------
 
-function wire(row: number, fromColumn: number, toColumn: number): LadWire {
-  return { row, from_column: fromColumn, to_column: toColumn };
+function wire(row: number, fromColumn: number, toColumn: number, flow: string): LadWire {
+  return { row, from_column: fromColumn, to_column: toColumn, flow };
 }
 
-function link(column: number, fromRow: number, toRow: number): LadLink {
-  return { column, from_row: fromRow, to_row: toRow };
+function link(column: number, fromRow: number, toRow: number, flow: string): LadLink {
+  return { column, from_row: fromRow, to_row: toRow, flow };
 }
 
 function pin(name: string, side: LadPin['side'], row: number, operand: string | null = null): LadPin {
@@ -99,16 +108,18 @@ class Grid {
 
   parallel(parallel: Parallel, column: number, row: number): number {
     const [width, height] = elementSize(parallel);
+    // Every branch starts from the flow into the parallel; its right edge carries the OR.
+    const into = `${parallel.id}:in`;
     let top = row;
     let last = row;
     for (const branch of parallel.branches) {
       const end = this.series(branch, column, top);
-      if (end < column + width) this.wires.push(wire(top, end, column + width));
+      if (end < column + width) this.wires.push(wire(top, end, column + width, flowAfter(branch, into)));
       last = top;
       top += seriesSize(branch)[1];
     }
-    this.links.push(link(column, row, last));
-    this.links.push(link(column + width, row, last));
+    this.links.push(link(column, row, last, into));
+    this.links.push(link(column + width, row, last, parallel.id));
     this.parallels.push({ id: parallel.id, column, row, width, height });
     return column + width;
   }
@@ -116,8 +127,8 @@ class Grid {
   box(box: Box, column: number, row: number): number {
     const [pinsWidth, rows] = boxRows(box);
     const at = column + pinsWidth;
-    // The power flow passes over the logic drawn into the pins.
-    if (pinsWidth) this.wires.push(wire(row, column, at));
+    // The power flow into the box passes over the logic drawn into its pins.
+    if (pinsWidth) this.wires.push(wire(row, column, at, `${box.id}:in`));
     const [flowIn, flowOut] = flowPins(box.name);
     const pins: LadPin[] = flowIn === null ? [] : [pin(flowIn, 'left', row)];
     let nextRow = row + 1;
@@ -128,7 +139,8 @@ class Grid {
         continue;
       }
       const end = this.series(value, column, nextRow);
-      if (end < at) this.wires.push(wire(nextRow, end, at));
+      // Logic wired into a pin starts from the rail, on its own rows.
+      if (end < at) this.wires.push(wire(nextRow, end, at, flowAfter(value, 'rail')));
       pins.push(pin(name, 'left', nextRow));
       nextRow += seriesSize(value)[1];
     }
@@ -141,26 +153,28 @@ class Grid {
 
 /**
  * The grid layout of one rung: deterministic, nothing overlapping, every element placed. A network
- * kept as STL has no rung: an empty grid (the editor shows its STL lines).
+ * kept as STL has no rung: an empty grid (the editor shows its STL lines). A rung without outputs
+ * ends at its logic: the right rail stands right after it.
  */
 export function ladLayout(network: Network): LadLayout {
   if (network.stl !== null) return { columns: 0, rows: 0, cells: [], parallels: [], links: [], wires: [] };
   const grid = new Grid();
   const logicEnd = grid.series(network.logic, 0, 0);
   const logicHeight = seriesSize(network.logic)[1];
+  const common = flowAfter(network.logic, 'rail');
   const outputs = network.outputs.map((output) => ({ output, cond: seriesSize(output.conditions), target: elementSize(output.target) }));
-  const rail = logicEnd + Math.max(...outputs.map(({ cond, target }) => cond[0] + target[0]));
+  const rail = logicEnd + Math.max(0, ...outputs.map(({ cond, target }) => cond[0] + target[0]));
   let row = 0;
   let lastTop = 0; // the outputs' tops run from row 0 down to the last output's
   for (const { output, cond, target } of outputs) {
     const end = grid.series(output.conditions, logicEnd, row);
     const start = rail - target[0];
-    if (end < start) grid.wires.push(wire(row, end, start));
+    if (end < start) grid.wires.push(wire(row, end, start, flowAfter(output.conditions, common)));
     grid.element(output.target, start, row);
     lastTop = row;
     row += Math.max(cond[1], target[1]);
   }
-  if (outputs.length > 1) grid.links.push(link(logicEnd, 0, lastTop));
+  if (outputs.length > 1) grid.links.push(link(logicEnd, 0, lastTop, common));
   return {
     columns: rail,
     rows: Math.max(logicHeight, row),

@@ -179,7 +179,10 @@ export interface OpenDb {
   block: string;
 }
 
-/** One network in FBD: the common logic and the final boxes fed from it. */
+/**
+ * One network in FBD: the common logic and the final boxes fed from it (none yet while
+ * the network is being drawn).
+ */
 export interface FbdNetwork {
   title: string;
   comment: string;
@@ -360,18 +363,40 @@ export interface LadRegion {
   height: number;
 }
 
-/** A vertical wire on the left edge of `column`, from `from_row` down to `to_row`. */
+/**
+ * A vertical wire on the left edge of `column`, from `from_row` down to `to_row`.
+ *
+ * `flow` is the power flow it carries: `"<id>:in"` (the flow into element `id`) on the
+ * left edge of parallel `id`, `"<id>"` (the flow out of it) on its right edge; the link
+ * joining several outputs carries the flow out of the common logic, `"<id>"` of its last
+ * element or `"rail"` (the left rail) when it is empty.
+ */
 export interface LadLink {
   column: number;
   from_row: number;
   to_row: number;
+  flow: string;
 }
 
-/** A horizontal wire on `row` filling the cells `from_column` .. `to_column` - 1. */
+/**
+ * A horizontal wire on `row` filling the cells `from_column` .. `to_column` - 1.
+ *
+ * `flow` is the power flow it carries, written `"rail"` (the left rail), `"<id>"` (the
+ * flow out of element `id`) or `"<id>:in"` (the flow into element `id`):
+ *
+ * * the wire finishing a shorter branch of a parallel carries the flow out of the branch's
+ *   last element; an empty branch, the flow into the parallel (`"<parallel id>:in"`);
+ * * the wire a box's power flow takes over the logic drawn into its pins, `"<box id>:in"`;
+ *   the wire finishing the logic of a pin, the flow out of its last element (`"rail"` when
+ *   empty: logic wired into a pin starts from the rail);
+ * * the wire from an output's conditions to its final element, the flow out of the last
+ *   condition, or without conditions, of the common logic (its last element, or `"rail"`).
+ */
 export interface LadWire {
   row: number;
   from_column: number;
   to_column: number;
+  flow: string;
 }
 
 /** Where a box pin meets its wire, with the operand written at it (if any). */
@@ -412,7 +437,10 @@ export interface FbdLayoutEdge {
   target_port: string;
 }
 
-/** A pin: `id` is `<node>.<side>.<index>`; `label` the operand written at it. */
+/**
+ * A pin: `id` is `<node>.<side>.<index>`; `label` the operand written at it,
+ * `negated` its negation circle.
+ */
 export interface FbdPort {
   id: string;
   name: string;

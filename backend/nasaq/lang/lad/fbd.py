@@ -13,7 +13,9 @@ series/parallel tree (``nasaq.lang.lad.model``). Here the tree is turned into bo
   POS/NEG, see ``boxes``) is one input of the AND, like a contact, as STEP 7 draws it;
 * the rung's common part (``Network.logic``) is :attr:`FbdNetwork.logic`; each output is a final
   box (``=``/``S``/``R``/timer/counter coils, JMP/JMPN, RET, OPN or a box) whose input starts
-  from that common wire, :class:`FbdBranch` (the T-branch of STEP 7 FBD);
+  from that common wire, :class:`FbdBranch` (the T-branch of STEP 7 FBD). A rung being drawn
+  without outputs yet is its logic and no final boxes (an empty rung: the AND without inputs),
+  and ``from_fbd`` reads such a network back as the rung without outputs;
 * a parallel after other elements whose branches hold an element acting on the flow (NOT, an
   edge, a midline, a box with EN ...): every branch starts from the power flow *into* the
   parallel and the parallel passes the OR of its branches, as in IEC 61131-3 ladder (a
@@ -187,7 +189,8 @@ FbdFinal = Annotated[
 
 
 class FbdNetwork(BaseModel):
-    """One network in FBD: the common logic and the final boxes fed from it."""
+    """One network in FBD: the common logic and the final boxes fed from it (none yet while
+    the network is being drawn)."""
 
     model_config = ConfigDict(extra="forbid", frozen=True)
 

@@ -13,7 +13,13 @@ and as tall as its pins need. The rules:
   row, where the rung's wire passes, then one row per input/output pin; a Boolean pin fed by
   logic gets that logic drawn left of the box, from the pin's row down;
 * the outputs are stacked at the right rail: each output's conditions start where the common
-  logic ends, its final element (coil, jump, box ...) touches the rail.
+  logic ends, its final element (coil, jump, box ...) touches the rail. A rung being drawn may
+  have no outputs yet: the rail then stands right after its logic (an empty rung is a rung of
+  no width and one row).
+
+Every wire and link names the power flow it carries (``flow``), so that the editor colours it
+from the monitored flows without walking the tree again: ``"rail"`` is the flow of the left
+rail, ``"<id>"`` the flow out of element ``id`` and ``"<id>:in"`` the flow into it.
 
 Nothing overlaps, by construction: every tree node owns a rectangle and places its children
 inside it. FBD's layout is in ``layout_fbd``.
@@ -68,19 +74,37 @@ class LadRegion(_Frozen):
 
 
 class LadLink(_Frozen):
-    """A vertical wire on the left edge of ``column``, from ``from_row`` down to ``to_row``."""
+    """A vertical wire on the left edge of ``column``, from ``from_row`` down to ``to_row``.
+
+    ``flow`` is the power flow it carries: ``"<id>:in"`` (the flow into element ``id``) on the
+    left edge of parallel ``id``, ``"<id>"`` (the flow out of it) on its right edge; the link
+    joining several outputs carries the flow out of the common logic, ``"<id>"`` of its last
+    element or ``"rail"`` (the left rail) when it is empty."""
 
     column: int
     from_row: int
     to_row: int
+    flow: str
 
 
 class LadWire(_Frozen):
-    """A horizontal wire on ``row`` filling the cells ``from_column`` .. ``to_column`` - 1."""
+    """A horizontal wire on ``row`` filling the cells ``from_column`` .. ``to_column`` - 1.
+
+    ``flow`` is the power flow it carries, written ``"rail"`` (the left rail), ``"<id>"`` (the
+    flow out of element ``id``) or ``"<id>:in"`` (the flow into element ``id``):
+
+    * the wire finishing a shorter branch of a parallel carries the flow out of the branch's
+      last element; an empty branch, the flow into the parallel (``"<parallel id>:in"``);
+    * the wire a box's power flow takes over the logic drawn into its pins, ``"<box id>:in"``;
+      the wire finishing the logic of a pin, the flow out of its last element (``"rail"`` when
+      empty: logic wired into a pin starts from the rail);
+    * the wire from an output's conditions to its final element, the flow out of the last
+      condition, or without conditions, of the common logic (its last element, or ``"rail"``)."""
 
     row: int
     from_column: int
     to_column: int
+    flow: str
 
 
 class LadLayout(_Frozen):
@@ -127,6 +151,11 @@ def _box_rows(box: Box) -> tuple[int, int]:
     return pins_width, max(row, 1 + len(_pin_outputs(box)))
 
 
+def _flow_after(series: Series, into: str) -> str:
+    """The flow out of ``series`` fed by the flow ``into``: out of its last element."""
+    return series.elements[-1].id if series.elements else into
+
+
 def _pin_outputs(box: Box) -> list[tuple[str, str]]:
     """The output pins below the top row: all but the one the power flow leaves by."""
     flow_out = flow_pins(box.name)[1]
@@ -161,14 +190,20 @@ class _Grid:
 
     def parallel(self, parallel: Parallel, column: int, row: int) -> int:
         width, height = _element_size(parallel)
+        into = f"{parallel.id}:in"
         top = row
         for branch in parallel.branches:
             end = self.series(branch, column, top)
             if end < column + width:
-                self.wires.append(LadWire(row=top, from_column=end, to_column=column + width))
+                flow = _flow_after(branch, into)
+                self.wires.append(
+                    LadWire(row=top, from_column=end, to_column=column + width, flow=flow)
+                )
             last, top = top, top + _series_size(branch)[1]
-        self.links.append(LadLink(column=column, from_row=row, to_row=last))
-        self.links.append(LadLink(column=column + width, from_row=row, to_row=last))
+        self.links.append(LadLink(column=column, from_row=row, to_row=last, flow=into))
+        self.links.append(
+            LadLink(column=column + width, from_row=row, to_row=last, flow=parallel.id)
+        )
         self.parallels.append(
             LadRegion(id=parallel.id, column=column, row=row, width=width, height=height)
         )
@@ -178,7 +213,9 @@ class _Grid:
         pins_width, rows = _box_rows(box)
         at = column + pins_width
         if pins_width:  # the power flow passes over the logic drawn into the pins
-            self.wires.append(LadWire(row=row, from_column=column, to_column=at))
+            self.wires.append(
+                LadWire(row=row, from_column=column, to_column=at, flow=f"{box.id}:in")
+            )
         flow_in, flow_out = flow_pins(box.name)
         pins = [] if flow_in is None else [LadPin(name=flow_in, side="left", row=row)]
         next_row = row + 1
@@ -186,7 +223,10 @@ class _Grid:
             if isinstance(value, Series):
                 end = self.series(value, column, next_row)
                 if end < at:
-                    self.wires.append(LadWire(row=next_row, from_column=end, to_column=at))
+                    flow = _flow_after(value, "rail")
+                    self.wires.append(
+                        LadWire(row=next_row, from_column=end, to_column=at, flow=flow)
+                    )
                 pins.append(LadPin(name=name, side="left", row=next_row))
                 next_row += _series_size(value)[1]
             else:
@@ -207,26 +247,29 @@ class _Grid:
 
 def lad_layout(network: Network) -> LadLayout:
     """The grid layout of one rung: deterministic, nothing overlapping, every element placed.
-    A network kept as STL has no rung: an empty grid (the editor shows its STL lines)."""
+    A network kept as STL has no rung: an empty grid (the editor shows its STL lines). A rung
+    without outputs ends at its logic: the right rail stands right after it."""
     if network.stl is not None:
         return LadLayout(columns=0, rows=0, cells=[], parallels=[], links=[], wires=[])
     grid = _Grid()
     logic_end = grid.series(network.logic, 0, 0)
     logic_height = _series_size(network.logic)[1]
+    common = _flow_after(network.logic, "rail")
     sizes = [(_series_size(out.conditions), _element_size(out.target)) for out in network.outputs]
-    rail = logic_end + max(cond[0] + target[0] for cond, target in sizes)
+    rail = logic_end + max((cond[0] + target[0] for cond, target in sizes), default=0)
     row = 0
     tops = []
     for output, (cond, target) in zip(network.outputs, sizes, strict=True):
         end = grid.series(output.conditions, logic_end, row)
         start = rail - target[0]
         if end < start:
-            grid.wires.append(LadWire(row=row, from_column=end, to_column=start))
+            flow = _flow_after(output.conditions, common)
+            grid.wires.append(LadWire(row=row, from_column=end, to_column=start, flow=flow))
         grid.element(output.target, start, row)
         tops.append(row)
         row += max(cond[1], target[1])
     if len(tops) > 1:
-        grid.links.append(LadLink(column=logic_end, from_row=tops[0], to_row=tops[-1]))
+        grid.links.append(LadLink(column=logic_end, from_row=tops[0], to_row=tops[-1], flow=common))
     return LadLayout(
         columns=rail,
         rows=max(logic_height, row),

@@ -9,9 +9,13 @@ branches through its own edge too.
 
 Layers come from the longest path to an output: final boxes (``=``, ``S``, JMP, boxes ending
 the rung) are in the last layer, a box feeding them one layer to the left, and so on; a box used
-by two outputs sits left of both. Within a layer, nodes are ordered by first visit, walking the
-outputs top-down and each box's inputs top-down, so the same network always gives the same
-layout. A node is two cells wide and as tall as its larger side's port count (at least one).
+by two outputs sits left of both. A network being drawn may have no outputs yet: its common
+logic's node is then the last layer (a lone operand or status bit is a node without a box, its
+text and negation circle on its one output port), and an empty rung, whose logic is the rail
+alone, has no nodes: an empty FBD network. Within a layer, nodes are ordered by first visit,
+walking the outputs top-down and each box's inputs top-down, so the same network always gives
+the same layout. A node is two cells wide and as tall as its larger side's port count (at least
+one).
 """
 
 from __future__ import annotations
@@ -44,7 +48,8 @@ class _Frozen(BaseModel):
 
 
 class FbdPort(_Frozen):
-    """A pin: ``id`` is ``<node>.<side>.<index>``; ``label`` the operand written at it."""
+    """A pin: ``id`` is ``<node>.<side>.<index>``; ``label`` the operand written at it,
+    ``negated`` its negation circle."""
 
     id: str
     name: str
@@ -101,6 +106,10 @@ def _inputs(node: _Box) -> list[tuple[str, str | FbdNode]]:
 
 
 def _outputs(node: _Box) -> list[tuple[str, str | None]]:
+    if isinstance(node, FbdOperand):  # only the lone logic of a network without outputs
+        return [("OUT", node.operand)]
+    if isinstance(node, FbdStatus):
+        return [("OUT", node.bit)]
     if isinstance(node, FbdBox):
         flow_out = flow_pins(node.name)[1] or "OUT"
         pins = [(name, operand) for name, operand in node.outputs.items() if name != flow_out]
@@ -111,6 +120,8 @@ def _outputs(node: _Box) -> list[tuple[str, str | None]]:
 
 
 def _title(node: _Box) -> str:
+    if isinstance(node, FbdOperand | FbdStatus):
+        return ""  # no box: the operand is written at its output
     if isinstance(node, FbdLogic):
         return _TITLES[node.op]
     if isinstance(node, FbdBox):
@@ -204,14 +215,23 @@ class _Layering:
         return f"n{count}"
 
 
+def _is_rail(node: FbdNode) -> bool:
+    """Whether ``node`` is the empty series: an AND without inputs, always true."""
+    return isinstance(node, FbdLogic) and node.op == "AND" and not node.inputs and node.flow is None
+
+
 def fbd_layout(fbd: FbdNetwork) -> FbdLayout:
     """The layered graph of one FBD network (see the module docstring for the rules); none for
-    a network kept as STL."""
+    a network kept as STL or an empty one."""
     if fbd.stl is not None:
         return FbdLayout(layers=0, nodes=[], edges=[])
     walk = _Layering(fbd)
     for final in fbd.outputs:
         walk.visit(final, 0)
+    if not fbd.outputs and not _is_rail(fbd.logic):  # a network being drawn ends at its logic
+        walk.visit(fbd.logic, 0)
+    if not walk.depth:
+        return FbdLayout(layers=0, nodes=[], edges=[])
     deepest = max(walk.depth.values())
     orders: dict[int, int] = {}
     nodes: list[FbdLayoutNode] = []
@@ -249,8 +269,16 @@ def fbd_layout(fbd: FbdNetwork) -> FbdLayout:
                     )
                 )
         outputs = _outputs(node)
+        negated = isinstance(node, FbdOperand | FbdStatus) and node.negated
         ports.extend(
-            FbdPort(id=f"{name}.E.{index}", name=pin, side="EAST", index=index, label=label)
+            FbdPort(
+                id=f"{name}.E.{index}",
+                name=pin,
+                side="EAST",
+                index=index,
+                label=label,
+                negated=negated,
+            )
             for index, (pin, label) in enumerate(outputs)
         )
         height = max(1, len(ports) - len(outputs), len(outputs))

@@ -393,3 +393,36 @@ def test_a_network_kept_as_stl_passes_through_the_fbd_view() -> None:
     assert fbd.stl == kept.stl
     assert fbd.outputs == []
     assert from_fbd(fbd) == kept
+
+
+# --- rungs being drawn -----------------------------------------------------------------------
+
+
+def test_an_empty_rung_is_the_rail_alone_and_reads_back() -> None:
+    empty = Network(label="M001")
+    view = to_fbd(empty)
+    assert view.logic == FbdLogic(id="&1", op="AND")
+    assert view.outputs == []
+    assert from_fbd(view) == empty
+
+
+def test_logic_waiting_for_its_coil_is_its_logic_without_final_boxes() -> None:
+    timer = Box(id="t", name="S_ODT", instance="T 1", inputs={"TV": "S5T#2S"})
+    waiting = Network(logic=Series(elements=[contact("a", "I 0.0", True), timer]))
+    view = to_fbd(waiting)
+    assert view.logic == FbdBox(
+        id="t", name="S_ODT", instance="T 1", en=op("I 0.0", True, "a"), inputs={"TV": "S5T#2S"}
+    )
+    assert view.outputs == []
+    assert from_fbd(view) == waiting
+
+
+@pytest.mark.parametrize("seed", range(100))
+def test_random_logic_without_outputs_round_trips(seed: int) -> None:
+    network = RandomNetworks(seed).network().model_copy(update={"outputs": []})
+    view = to_fbd(network)
+    assert view.outputs == []
+    back = from_fbd(view)
+    assert back == network
+    assert isinstance(back, Network)
+    assert to_fbd(back) == view

@@ -7,7 +7,17 @@ from lad_random import RandomNetworks, element_ids
 
 from nasaq.lang.lad.fbd import FbdAssign, FbdBranch, FbdLogic, FbdNetwork, FbdOperand, to_fbd
 from nasaq.lang.lad.layout import LadLayout, fbd_layout, lad_layout
-from nasaq.lang.lad.model import Box, Coil, Contact, Invert, Network, Output, Parallel, Series
+from nasaq.lang.lad.model import (
+    Box,
+    Coil,
+    Contact,
+    Invert,
+    Network,
+    Output,
+    Parallel,
+    Series,
+    StatusContact,
+)
 
 
 def contact(ident: str, operand: str = "I 0.0") -> Contact:
@@ -269,3 +279,142 @@ def test_a_network_kept_as_stl_has_no_rung_to_lay_out() -> None:
     assert lad_layout(kept).cells == []
     assert lad_layout(kept).columns == 0
     assert fbd_layout(to_fbd(kept)).nodes == []
+
+
+# --- the power flow on each wire -------------------------------------------------------------
+
+
+def coil(ident: str, operand: str = "Q 4.0") -> Coil:
+    return Coil(id=ident, coil="=", operand=operand)
+
+
+def test_every_wire_and_link_names_the_flow_it_carries() -> None:
+    call = Box(
+        id="f",
+        name="FC 10",
+        inputs={
+            "A": Series(elements=[contact("x"), contact("y")]),
+            "B": Series(elements=[contact("z")]),
+            "N": "MW 2",
+            "C": Series(),
+        },
+    )
+    branches = [
+        Series(elements=[contact("b"), contact("c")]),
+        Series(),
+        Series(elements=[contact("d")]),
+    ]
+    network = Network(
+        logic=Series(elements=[contact("a"), Parallel(id="p", branches=branches), call]),
+        outputs=[
+            Output(target=coil("q1")),
+            Output(conditions=Series(elements=[contact("e")]), target=coil("q2")),
+            Output(conditions=Series(elements=[contact("h"), contact("i")]), target=coil("q3")),
+        ],
+    )
+    layout = lad_layout(network)
+    assert [(w.row, w.from_column, w.to_column, w.flow) for w in layout.wires] == [
+        (1, 1, 3, "p:in"),  # the empty branch: the flow into the parallel
+        (2, 2, 3, "d"),  # a shorter branch: the flow out of its last element
+        (0, 3, 5, "f:in"),  # the box's flow passing over the logic of its pins
+        (2, 4, 5, "z"),  # a pin's shorter logic: the flow out of its last element
+        (4, 3, 5, "rail"),  # a pin's empty logic: the rail it starts from
+        (0, 7, 9, "f"),  # an output without conditions: the common logic's flow
+        (1, 8, 9, "e"),  # an output's conditions: the flow out of the last one
+    ]
+    assert [(k.column, k.from_row, k.to_row, k.flow) for k in layout.links] == [
+        (1, 0, 2, "p:in"),  # a parallel's left edge: the flow into it
+        (3, 0, 2, "p"),  # its right edge: the flow out of it
+        (7, 0, 2, "f"),  # the outputs' join: the common logic's flow
+    ]
+
+
+def test_outputs_straight_from_the_rail_carry_the_rail() -> None:
+    network = Network(
+        outputs=[
+            Output(target=coil("q1")),
+            Output(conditions=Series(elements=[contact("a")]), target=coil("q2")),
+        ]
+    )
+    layout = lad_layout(network)
+    assert [(w.row, w.from_column, w.to_column, w.flow) for w in layout.wires] == [
+        (0, 0, 1, "rail")
+    ]
+    assert [(k.column, k.from_row, k.to_row, k.flow) for k in layout.links] == [(0, 0, 1, "rail")]
+
+
+def flow_points(network: Network) -> set[str]:
+    """Every flow point of the network: the rail, and into and out of each element."""
+    ids = element_ids(network)
+    return {"rail", *ids, *(f"{ident}:in" for ident in ids)}
+
+
+@pytest.mark.parametrize("seed", range(200))
+def test_every_flow_is_a_point_of_the_network(seed: int) -> None:
+    network = RandomNetworks(seed).network()
+    for rung in (network, network.model_copy(update={"outputs": []})):
+        layout = lad_layout(rung)
+        flows = {wire.flow for wire in layout.wires} | {link.flow for link in layout.links}
+        assert flows <= flow_points(rung)
+
+
+# --- rungs being drawn -----------------------------------------------------------------------
+
+
+def test_an_empty_rung_is_a_rung_of_no_width_and_one_row() -> None:
+    layout = lad_layout(Network(label="M001"))
+    assert (layout.columns, layout.rows) == (0, 1)
+    assert layout.cells == layout.parallels == layout.links == layout.wires == []
+    assert fbd_layout(to_fbd(Network())).nodes == []
+
+
+def test_without_outputs_the_rail_stands_right_after_the_logic() -> None:
+    parallel = Parallel(id="p", branches=[Series(elements=[contact("b")]), Series()])
+    network = Network(logic=Series(elements=[contact("a"), parallel]))
+    layout = lad_layout(network)
+    assert (layout.columns, layout.rows) == (2, 2)
+    assert cells_of(layout) == {"a": (0, 0, 1, 1), "b": (1, 0, 1, 1)}
+    assert [(w.row, w.from_column, w.to_column, w.flow) for w in layout.wires] == [
+        (1, 1, 2, "p:in")
+    ]
+
+
+@pytest.mark.parametrize("seed", range(100))
+def test_random_logic_without_outputs_is_placed_up_to_the_rail(seed: int) -> None:
+    network = RandomNetworks(seed).network().model_copy(update={"outputs": []})
+    layout = lad_layout(network)
+    placed = [cell.id for cell in layout.cells] + [region.id for region in layout.parallels]
+    assert sorted(placed) == sorted(element_ids(network))
+    spots = [(column, row) for _, column, row in occupied(layout)]
+    assert len(spots) == len(set(spots))
+    assert layout.columns == max((column + 1 for column, _ in spots), default=0)
+    assert all(0 <= row < layout.rows for _, row in spots)
+
+
+def test_without_outputs_the_common_logic_is_the_last_layer() -> None:
+    timer = Box(id="t", name="S_ODT", instance="T 1", inputs={"TV": "S5T#2S"})
+    network = Network(logic=Series(elements=[contact("a"), Invert(id="n"), timer]))
+    layout = fbd_layout(to_fbd(network))
+    assert [(node.id, node.title, node.layer) for node in layout.nodes] == [
+        ("t", "T 1 S_ODT", 1),
+        ("n", "NOT", 0),
+    ]
+    assert layout.layers == 2
+    assert [(e.source, e.target_port) for e in layout.edges] == [("n", "t.W.0")]
+
+
+def test_a_lone_operand_without_outputs_is_a_node_with_its_operand_at_its_output() -> None:
+    for logic, text in ((contact("a", "I 0.3"), "I 0.3"), (StatusContact(id="a", bit="OV"), "OV")):
+        negated = logic.model_copy(update={"negated": True})
+        layout = fbd_layout(to_fbd(Network(logic=Series(elements=[negated]))))
+        (node,) = layout.nodes
+        assert (node.id, node.kind, node.title, node.operand, node.layer) == (
+            "a",
+            "operand" if isinstance(logic, Contact) else "status",
+            "",
+            None,
+            0,
+        )
+        assert [(p.id, p.side, p.label, p.negated) for p in node.ports] == [
+            ("a.E.0", "EAST", text, True)
+        ]
