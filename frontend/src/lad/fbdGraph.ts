@@ -203,13 +203,14 @@ function portsAndEdges(walk: Layering, node: Node, name: string): { ports: FbdPo
   inputsOf(node).forEach(([pin, value], index) => {
     const port = `${name}.W.${index}`;
     const fed = walk.resolve(value, node);
-    const west = (label: string | null = null, negated = false): FbdPort => ({ id: port, name: pin, side: 'WEST', index, label, negated });
+    const west = (label: string | null = null, negated = false, element: string | null = null): FbdPort => ({ id: port, name: pin, side: 'WEST', index, label, negated, element });
     if (typeof fed === 'string') {
       ports.push(west(fed));
     } else if (fed.kind === 'operand') {
-      ports.push(west(fed.operand, fed.negated));
+      // The contact is the LAD element behind the operand: the editor selects it there.
+      ports.push(west(fed.operand, fed.negated, fed.id || null));
     } else if (fed.kind === 'status') {
-      ports.push(west(fed.bit, fed.negated));
+      ports.push(west(fed.bit, fed.negated, fed.id || null));
     } else {
       ports.push(west());
       if (fed.kind === 'branch' || walk.isLoop(node, value)) return;
@@ -218,8 +219,11 @@ function portsAndEdges(walk: Layering, node: Node, name: string): { ports: FbdPo
     }
   });
   const outputs = outputsOf(node);
-  const negated = (node.kind === 'operand' || node.kind === 'status') && node.negated;
-  outputs.forEach(([pin, label], index) => ports.push({ id: `${name}.E.${index}`, name: pin, side: 'EAST', index, label, negated }));
+  // A lone operand (a network without outputs) has its negation and its element at its output.
+  const lone = node.kind === 'operand' || node.kind === 'status';
+  const negated = lone && node.negated;
+  const element = lone ? node.id || null : null;
+  outputs.forEach(([pin, label], index) => ports.push({ id: `${name}.E.${index}`, name: pin, side: 'EAST', index, label, negated, element }));
   return { ports, edges, outputs: outputs.length };
 }
 

@@ -439,7 +439,9 @@ export interface FbdLayoutEdge {
 
 /**
  * A pin: `id` is `<node>.<side>.<index>`; `label` the operand written at it,
- * `negated` its negation circle.
+ * `negated` its negation circle; `element` the LAD element that operand is (the contact or
+ * status bit, so the editor selects it and shows its status there), None for a box's own
+ * operand or a wire.
  */
 export interface FbdPort {
   id: string;
@@ -448,4 +450,5 @@ export interface FbdPort {
   index: number;
   label: string | null;
   negated: boolean;
+  element: string | null;
 }

@@ -49,7 +49,9 @@ class _Frozen(BaseModel):
 
 class FbdPort(_Frozen):
     """A pin: ``id`` is ``<node>.<side>.<index>``; ``label`` the operand written at it,
-    ``negated`` its negation circle."""
+    ``negated`` its negation circle; ``element`` the LAD element that operand is (the contact or
+    status bit, so the editor selects it and shows its status there), None for a box's own
+    operand or a wire."""
 
     id: str
     name: str
@@ -57,6 +59,7 @@ class FbdPort(_Frozen):
     index: int
     label: str | None = None
     negated: bool = False
+    element: str | None = None
 
 
 class FbdLayoutNode(_Frozen):
@@ -215,9 +218,74 @@ class _Layering:
         return f"n{count}"
 
 
+def _lone_operand(node: _Box) -> tuple[bool, str | None]:
+    """The negation circle and the element at the output of a node that is an operand (the
+    lone logic of a network without outputs); none for a box."""
+    if isinstance(node, FbdOperand | FbdStatus):
+        return node.negated, node.id or None
+    return False, None
+
+
 def _is_rail(node: FbdNode) -> bool:
     """Whether ``node`` is the empty series: an AND without inputs, always true."""
     return isinstance(node, FbdLogic) and node.op == "AND" and not node.inputs and node.flow is None
+
+
+def _west(walk: _Layering, node: _Box, name: str) -> tuple[list[FbdPort], list[FbdLayoutEdge]]:
+    """The node's input ports, with the operand written at each, and the wires into them."""
+    ports: list[FbdPort] = []
+    edges: list[FbdLayoutEdge] = []
+    for index, (pin, value) in enumerate(_inputs(node)):
+        port = f"{name}.W.{index}"
+        fed = walk.resolve(value, node)
+        if isinstance(fed, str):
+            ports.append(FbdPort(id=port, name=pin, side="WEST", index=index, label=fed))
+        elif isinstance(fed, FbdOperand | FbdStatus):
+            text = fed.operand if isinstance(fed, FbdOperand) else fed.bit
+            element = fed.id or None
+            ports.append(
+                FbdPort(
+                    id=port,
+                    name=pin,
+                    side="WEST",
+                    index=index,
+                    label=text,
+                    negated=fed.negated,
+                    element=element,
+                )
+            )
+        else:
+            ports.append(FbdPort(id=port, name=pin, side="WEST", index=index))
+            if isinstance(fed, FbdBranch) or (id(node), id(value)) in walk.loops:
+                continue  # an open pin: a T-branch LAD refuses
+            source = walk.ids[id(fed)]
+            edges.append(
+                FbdLayoutEdge(
+                    id=f"{source}->{port}",
+                    source=source,
+                    source_port=f"{source}.E.0",
+                    target=name,
+                    target_port=port,
+                )
+            )
+    return ports, edges
+
+
+def _east(node: _Box, name: str) -> list[FbdPort]:
+    """The node's output ports, with the operand written at each."""
+    negated, element = _lone_operand(node)
+    return [
+        FbdPort(
+            id=f"{name}.E.{index}",
+            name=pin,
+            side="EAST",
+            index=index,
+            label=label,
+            negated=negated,
+            element=element,
+        )
+        for index, (pin, label) in enumerate(_outputs(node))
+    ]
 
 
 def fbd_layout(fbd: FbdNetwork) -> FbdLayout:
@@ -241,47 +309,9 @@ def fbd_layout(fbd: FbdNetwork) -> FbdLayout:
         layer = deepest - walk.depth[id(node)]
         order = orders.get(layer, 0)
         orders[layer] = order + 1
-        ports: list[FbdPort] = []
-        for index, (pin, value) in enumerate(_inputs(node)):
-            port = f"{name}.W.{index}"
-            fed = walk.resolve(value, node)
-            if isinstance(fed, str):
-                ports.append(FbdPort(id=port, name=pin, side="WEST", index=index, label=fed))
-            elif isinstance(fed, FbdOperand | FbdStatus):
-                text = fed.operand if isinstance(fed, FbdOperand) else fed.bit
-                ports.append(
-                    FbdPort(
-                        id=port, name=pin, side="WEST", index=index, label=text, negated=fed.negated
-                    )
-                )
-            else:
-                ports.append(FbdPort(id=port, name=pin, side="WEST", index=index))
-                if isinstance(fed, FbdBranch) or (id(node), id(value)) in walk.loops:
-                    continue
-                source = walk.ids[id(fed)]
-                edges.append(
-                    FbdLayoutEdge(
-                        id=f"{source}->{port}",
-                        source=source,
-                        source_port=f"{source}.E.0",
-                        target=name,
-                        target_port=port,
-                    )
-                )
-        outputs = _outputs(node)
-        negated = isinstance(node, FbdOperand | FbdStatus) and node.negated
-        ports.extend(
-            FbdPort(
-                id=f"{name}.E.{index}",
-                name=pin,
-                side="EAST",
-                index=index,
-                label=label,
-                negated=negated,
-            )
-            for index, (pin, label) in enumerate(outputs)
-        )
-        height = max(1, len(ports) - len(outputs), len(outputs))
+        ports, into = _west(walk, node, name)
+        east = _east(node, name)
+        edges.extend(into)
         nodes.append(
             FbdLayoutNode(
                 id=name,
@@ -291,8 +321,8 @@ def fbd_layout(fbd: FbdNetwork) -> FbdLayout:
                 layer=layer,
                 order=order,
                 width=2,
-                height=height,
-                ports=ports,
+                height=max(1, len(ports), len(east)),
+                ports=[*ports, *east],
             )
         )
     return FbdLayout(layers=deepest + 1, nodes=nodes, edges=edges)

@@ -415,6 +415,26 @@ def test_a_lone_operand_without_outputs_is_a_node_with_its_operand_at_its_output
             None,
             0,
         )
-        assert [(p.id, p.side, p.label, p.negated) for p in node.ports] == [
-            ("a.E.0", "EAST", text, True)
+        assert [(p.id, p.side, p.label, p.negated, p.element) for p in node.ports] == [
+            ("a.E.0", "EAST", text, True, "a")
         ]
+
+
+def test_a_port_names_the_element_whose_operand_it_shows() -> None:
+    compare = Box(id="c", name="CMP>I", inputs={"IN1": "MW 0", "IN2": "MW 2"})
+    network = Network(
+        logic=Series(elements=[contact("a", "I 0.0"), StatusContact(id="s", bit="OV"), compare]),
+        outputs=[Output(target=Coil(id="q", coil="=", operand="Q 4.0"))],
+    )
+    layout = fbd_layout(to_fbd(network))
+    ports = {p.id: (p.label, p.element) for node in layout.nodes for p in node.ports}
+    assert ports == {
+        "q.W.0": (None, None),  # a wire
+        "&1.W.0": ("I 0.0", "a"),
+        "&1.W.1": ("OV", "s"),
+        "&1.W.2": (None, None),
+        "&1.E.0": (None, None),
+        "c.W.0": ("MW 0", None),  # the box's own operands
+        "c.W.1": ("MW 2", None),
+        "c.E.0": (None, None),
+    }
