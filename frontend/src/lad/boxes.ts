@@ -228,27 +228,17 @@ function decimal(digits: string): string {
   return BigInt(ascii).toString();
 }
 
-let digitZeros: number[] | null = null;
+const DIGIT = /\p{Nd}/u;
 
 /**
- * The value of a decimal digit (Unicode category Nd). Unicode keeps every script's digits as one
- * run of ten code points from 0 to 9, so the runs' starts are found once, in order, by a scan.
+ * The value of a decimal digit (Unicode category Nd). Unicode keeps every script's digits as runs
+ * of ten code points from 0 to 9, some runs back to back (the mathematical digits): the value is
+ * the distance from the start of the unbroken stretch of digits, modulo ten.
  */
 function digitValue(code: number): number {
-  if (code >= 0x30 && code <= 0x39) return code - 0x30;
-  if (digitZeros === null) {
-    digitZeros = [];
-    const digit = /\p{Nd}/u;
-    for (let at = 0; at <= 0x10ffff; at++) {
-      if (digit.test(String.fromCodePoint(at))) {
-        digitZeros.push(at);
-        at += 9;
-      }
-    }
-  }
-  let zero = 0;
-  for (const start of digitZeros) if (start <= code) zero = start;
-  return code - zero;
+  let start = code;
+  while (start > 0 && DIGIT.test(String.fromCodePoint(start - 1))) start -= 1;
+  return (code - start) % 10;
 }
 
 /**
