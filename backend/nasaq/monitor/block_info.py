@@ -35,7 +35,7 @@ class Slot:
 class BlockInfo:
     block: Block
     name: str
-    language: str  # "stl" or "scl"
+    language: str  # "stl", "scl", "lad" or "fbd": the language of the block's source
     file: str | None
     lines: list[int | None]
     networks: list[int]
@@ -99,7 +99,8 @@ def block_info(block: Block) -> BlockInfo:
     targets = set(block.labels.values()) | {k for k, ins in enumerate(code) if ins.label}
     starts = [k == 0 or lines[k] != lines[k - 1] or k in targets for k in range(len(code))]
     file = sorted(files)[0] if files else None
-    language = "scl" if file is not None and file.lower().endswith(".scl") else "stl"
+    suffix = file.lower().rsplit(".", 1)[-1] if file is not None and "." in file else ""
+    language = suffix if suffix in ("scl", "lad", "fbd") else "stl"
     info = BlockInfo(block, block_name(block), language, file, lines, networks, starts)
     info.slots = [
         slot for slot in _slots(block) if not (language == "scl" and _HIDDEN.match(slot.name))
@@ -228,6 +229,6 @@ def breakpoint_indices(info: BlockInfo, location: Location) -> list[int]:
             hint=hint,
             next_line=later[0] if later else None,
         )
-    if info.language == "stl":
+    if info.language != "scl":  # STL, and the generated STL line of a LAD/FBD element
         return hits[:1]
     return hits

@@ -28,10 +28,10 @@ def command(session: Session, client: int, message: Any) -> Callable[[], Any]:
                 return result
 
             return watch
-        case p.OpenBlock(block=block):
+        case p.OpenBlock(block=block, networks=networks):
 
             def open_block() -> dict[str, object]:
-                result = s.do_open_block(client, block)
+                result = s.do_open_block(client, block, networks)
                 s.view(client).state.block_scan = None
                 return result
 

@@ -12,6 +12,7 @@ import json
 from typing import TYPE_CHECKING, Any
 
 from nasaq.monitor import protocol as p
+from nasaq.monitor.status import narrowed
 
 if TYPE_CHECKING:
     from nasaq.monitor.session import ClientView, Session, Snapshot
@@ -54,6 +55,8 @@ class FrameState:
                 self.block_scan,
                 self.block_name,
             ):
+                if view.open_networks is not None:  # another client may record more of it
+                    status = narrowed(status, view.open_networks, session.info(view.open_block))
                 frame.block = status
                 self.block_scan, self.block_name = status.scan, status.block
                 changed = True

@@ -47,10 +47,13 @@ class Watch(_Message):
 
 
 class OpenBlock(_Message):
-    """The block whose status (per STL instruction, per SCL line) the frames carry; None: none."""
+    """The block whose status (per STL instruction, per SCL line, per LAD/FBD element) the
+    frames carry; None: none. ``networks``: only these networks (1-based) are recorded and
+    reported, the ones an editor shows; None: all of them."""
 
     type: Literal["open_block"]
     block: str | None
+    networks: list[Annotated[int, Field(ge=1)]] | None = Field(default=None, max_length=10_000)
 
 
 class Trend(_Message):
@@ -270,14 +273,36 @@ class LineStatus(BaseModel):
     values: dict[str, Value]
 
 
+class ElementStatus(BaseModel):
+    """A LAD/FBD element in one sampled execution, as TIA Portal draws its power flow.
+
+    ``value``: the operand as the element read or wrote it (a contact's or status contact's
+    bit, a coil's bit after it, a midline's bit, an edge's memory bit, POS/NEG the bit it
+    watches; a timer or counter box or coil: its current value as the watch shows it).
+    ``out``: the element's Boolean result (contacts: null, the client computes the flow from
+    ``value`` and the tree; NOT, an edge, a midline: the power flow out of it; a compare or
+    POS/NEG box: its result, which the flow passes in series; an EN/ENO box or a call: its ENO;
+    a timer, counter or flip-flop box: its Q; a coil, jump or RET: the power flow into it).
+    ``pins``: a box's pins by name, inputs as read and outputs as written (a pin whose
+    instructions did not run, as in a box whose EN was 0, is absent)."""
+
+    network: int
+    id: str = Field(description="The element id in its network (e1, e2 ... in reading order)")
+    value: Value = None
+    out: bool | None = None
+    pins: dict[str, Value] = Field(default_factory=dict)
+
+
 class BlockStatus(BaseModel):
-    """One sampled execution of the open block: rows for the instructions that ran."""
+    """One sampled execution of the open block: rows for the instructions that ran, and for a
+    LAD/FBD block the status of each element that ran (an element absent did not run)."""
 
     block: str
-    language: Literal["stl", "scl"]
+    language: Literal["stl", "scl", "lad", "fbd"]
     scan: int
     instructions: list[InstructionStatus]
     lines: list[LineStatus]
+    elements: list[ElementStatus] = Field(default_factory=list)
 
 
 class Frame(BaseModel):

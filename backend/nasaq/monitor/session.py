@@ -49,8 +49,10 @@ from nasaq.monitor.debugger import (
     parse_condition,
 )
 from nasaq.monitor.download import carry_over, compile_download
+from nasaq.monitor.element_status import ElementStatusBuilder
 from nasaq.monitor.errors import MonitorError
 from nasaq.monitor.frames import FrameState
+from nasaq.monitor.lad_blocks import lad_blocks
 from nasaq.monitor.protocol import (
     BlockStatus,
     CpuState,
@@ -89,6 +91,7 @@ class ClientView:
     watch: list[str] = field(default_factory=list)
     watch_targets: dict[str, targets.Target | str] = field(default_factory=dict)
     open_block: Key | None = None
+    open_networks: frozenset[int] | None = None  # the networks of it on screen; None: all
     trend: list[targets.Target] = field(default_factory=list)
     samples: deque[TrendSample] = field(default_factory=lambda: deque(maxlen=TREND_SAMPLES))
     history: deque[TrendSample] = field(default_factory=lambda: deque(maxlen=TREND_SAMPLES))
@@ -119,6 +122,7 @@ class Session:
         self.sources = list(sources)
         self.profile = profile
         self.program = compile_download(self.sources)
+        self.lad = lad_blocks(self.sources, self.program)
         self.cpu = Cpu(self.program, profile, cycle_ms)
         self.time_mode: TimeModeName = time_mode
         self._resume_mode: TimeModeName = "virtual" if time_mode == "pause" else time_mode
@@ -383,6 +387,7 @@ class Session:
         changed = carry_over(self.program, self.cpu, program, cpu)
         self.sources = list(sources)
         self.program = program
+        self.lad = lad_blocks(self.sources, program)
         self.cpu = cpu
         self._infos.clear()
         self._recorders.clear()
@@ -416,16 +421,30 @@ class Session:
         view.history.clear()
         return {"entries": [{"entry": t.text, "type": t.type} for t in chosen]}
 
-    def do_open_block(self, client: int, name: str | None) -> dict[str, object]:
+    def do_open_block(
+        self, client: int, name: str | None, networks: list[int] | None = None
+    ) -> dict[str, object]:
         view = self.view(client)
         if name is None:
             view.open_block = None
+            view.open_networks = None
             return {}
         key = parse_block_name(name, self.program)
         info = self.info(key)
         view.open_block = key
+        view.open_networks = None if networks is None else frozenset(networks)
         self._last_capture = 0.0
         return {"block": info.name, "language": info.language, "instructions": len(info.lines)}
+
+    def _networks_on_screen(self, key: Key) -> frozenset[int] | None:
+        """The networks of ``key`` some client shows (None: all of them): what is recorded."""
+        shown: set[int] = set()
+        for view in list(self.clients.values()):
+            if view.open_block == key:
+                if view.open_networks is None:
+                    return None
+                shown |= view.open_networks
+        return frozenset(shown)
 
     def _memory_target(self, text: str) -> targets.Target:
         return watch.memory_target(text, self.program, self.cpu)
@@ -468,6 +487,9 @@ class Session:
             block = self.program.get(*key)
             assert block is not None
             found = self._infos[key] = block_info(block)
+            drawn = self.lad.get(key)
+            if drawn is not None:  # the language the block is drawn in (the file may say FBD)
+                found.language = drawn.language.lower()
         return found
 
     def _info_of(self, compiled: Compiled) -> BlockInfo:
@@ -477,8 +499,11 @@ class Session:
         found = self._recorders.get(key)
         if found is None:
             engine = self.engine
+            info = self.info(key)
+            drawn = self.lad.get(key)
+            elements = None if drawn is None else ElementStatusBuilder(drawn, info)
             found = self._recorders[key] = Recorder(
-                self.info(key), engine.memory, engine.timers, engine.counters
+                info, engine.memory, engine.timers, engine.counters, elements
             )
         return found
 
@@ -634,7 +659,8 @@ class Session:
         capture = now - self._last_capture >= FRAME_INTERVAL_S
         sampled = self._select_variants(capture)
         recorders = [self._recorder(key) for key in sampled]
-        for recorder in recorders:
+        for key, recorder in zip(sampled, recorders, strict=True):
+            recorder.select(self._networks_on_screen(key))
             recorder.begin()
         if self.time_mode == "real":
             self._follow_wall_clock(now)

@@ -10,7 +10,7 @@ SCL lines show the block's variables their code read or wrote, with the last val
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any, Literal
 
 from nasaq.cpu.memory import Memory
 from nasaq.cpu.timers import Timers
@@ -20,7 +20,10 @@ from nasaq.monitor.protocol import BlockStatus, InstructionStatus, LineStatus, V
 
 # Positions in the register tuple the hooks pass (codegen.compiler.HOOK_REGISTERS).
 A1, A2, FC, RLO, STA, ORB, OS, OV, CC0, CC1, BR, AR1, AR2, DB, DI = range(15)
-Reader = Callable[[bytearray, list[Any], tuple[Any, ...]], Value]
+Reader = Callable[[bytearray, list[Any], tuple[Any, ...]], Any]
+
+if TYPE_CHECKING:
+    from nasaq.monitor.element_status import ElementStatusBuilder
 
 
 def status_word(regs: tuple[Any, ...]) -> int:
@@ -39,24 +42,64 @@ def status_word(regs: tuple[Any, ...]) -> int:
 
 
 class Recorder:
-    """Collects one block's rows while ``on``; ``rows[index] = (registers, operand value)``."""
+    """Collects one block's rows while recording: ``rows[index] = (registers, operand value)``,
+    for the instructions of the selected networks only (``select``).
 
-    def __init__(self, info: BlockInfo, memory: Memory, timers: Timers, counters: Any) -> None:
+    Which instructions record is one list of flags, ``active``, that the hook reads by index:
+    all False between sampled scans, the selected networks' mask during one. So the hook costs
+    one check however many networks the block has, recording or not. ``extra`` holds what an
+    element status needs beyond the registers (a timer's time, a call's parameters), read by
+    readers ``attach`` adds to the instructions that need them."""
+
+    def __init__(
+        self,
+        info: BlockInfo,
+        memory: Memory,
+        timers: Timers,
+        counters: Any,
+        elements: ElementStatusBuilder | None = None,
+    ) -> None:
         self.info = info
-        self.on = False
+        self.memory, self.timers, self.counters = memory, timers, counters
         self.rows: dict[int, tuple[tuple[Any, ...], Value]] = {}
+        self.extra: dict[int, Any] = {}
         self.readers: list[Reader | None] = [
-            _reader(ins.operand, info, memory, timers, counters) for ins in info.block.code
+            reader_of(ins.operand, info, memory, timers, counters) for ins in info.block.code
         ]
         self.names: list[str | None] = [_name(ins.operand, info) for ins in info.block.code]
+        size = len(info.block.code)
+        self.mask = [True] * size
+        self.selected: frozenset[int] | None = None
+        self._off = [False] * size
+        self.active = list(self._off)
+        self.elements = elements
+        if elements is not None:
+            elements.attach(self)
         self.last: BlockStatus | None = None
 
+    def select(self, networks: frozenset[int] | None) -> None:
+        """Records only the instructions of ``networks`` (None: all), from the next sample."""
+        if networks == self.selected:
+            return
+        owner = self.info.networks
+        self.mask = [networks is None or owner[k] in networks for k in range(len(owner))]
+        self.selected = networks
+
+    def attach(self, index: int, extra: Reader) -> None:
+        """Also reads ``extra`` after instruction ``index`` while recording (into ``extra``)."""
+        base, store = self.readers[index], self.extra
+
+        def both(frame: bytearray, params: list[Any], regs: tuple[Any, ...]) -> Value:
+            store[index] = extra(frame, params, regs)
+            return base(frame, params, regs) if base else None
+
+        self.readers[index] = both
+
     def hook(self) -> Callable[..., None]:
-        rows, readers = self.rows, self.readers
-        recorder = self
+        rows, readers, active = self.rows, self.readers, self.active
 
         def after(index: int, frame: bytearray, params: list[Any], *regs: Any) -> None:
-            if recorder.on:
+            if active[index]:
                 reader = readers[index]
                 rows[index] = (regs, reader(frame, params, regs) if reader else None)
 
@@ -64,11 +107,12 @@ class Recorder:
 
     def begin(self) -> None:
         self.rows.clear()
-        self.on = True
+        self.extra.clear()
+        self.active[:] = self.mask
 
     def finish(self, scan: int) -> BlockStatus | None:
         """The status of the sampled scan, or the previous one if the block did not run."""
-        self.on = False
+        self.active[:] = self._off
         if not self.rows:
             return self.last
         info = self.info
@@ -93,14 +137,40 @@ class Recorder:
             name, line = self.names[index], info.lines[index]
             if name is not None and line is not None:
                 lines.setdefault(line, {})[name] = operand
+        elements = self.elements
         self.last = BlockStatus(
             block=info.name,
-            language="scl" if info.language == "scl" else "stl",
+            language=_LANGUAGES.get(info.language, "stl"),
             scan=scan,
             instructions=instructions,
             lines=[LineStatus(line=k, values=v) for k, v in sorted(lines.items())],
+            elements=[] if elements is None else elements.status(self.rows, self.extra),
         )
         return self.last
+
+
+_LANGUAGES: dict[str, Literal["stl", "scl", "lad", "fbd"]] = {
+    "stl": "stl",
+    "scl": "scl",
+    "lad": "lad",
+    "fbd": "fbd",
+}
+
+
+def narrowed(status: BlockStatus, networks: frozenset[int], info: BlockInfo) -> BlockStatus:
+    """``status`` with only the rows of ``networks``: what a client that opened those networks
+    sees when another client of the session records more of the block."""
+    owner = info.networks
+    if all(owner[row.index] in networks for row in status.instructions):
+        return status
+    lines = {info.lines[k] for k in range(len(owner)) if owner[k] in networks and info.lines[k]}
+    return status.model_copy(
+        update={
+            "instructions": [row for row in status.instructions if owner[row.index] in networks],
+            "lines": [row for row in status.lines if row.line in lines],
+            "elements": [row for row in status.elements if row.network in networks],
+        }
+    )
 
 
 def _name(operand: object, info: BlockInfo) -> str | None:
@@ -126,9 +196,11 @@ def _instance_slot(operand: object) -> Direct | None:
     return None
 
 
-def _reader(
+def reader_of(
     operand: object, info: BlockInfo, memory: Memory, timers: Timers, counters: Any
 ) -> Reader | None:
+    """What an instruction's row shows of ``operand`` after it: a bit, a value by its type,
+    a timer's or counter's state; None for operands that have no value (labels, constants)."""
     if isinstance(operand, TimerRef):
         number = operand.number
         return lambda frame, params, regs: timers.status(number)

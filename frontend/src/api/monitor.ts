@@ -42,12 +42,17 @@ export interface Watch {
   entries: string[];
 }
 
-/** The block whose status (per STL instruction, per SCL line) the frames carry; None: none. */
+/**
+ * The block whose status (per STL instruction, per SCL line, per LAD/FBD element) the
+ * frames carry; None: none. `networks`: only these networks (1-based) are recorded and
+ * reported, the ones an editor shows; None: all of them.
+ */
 export interface OpenBlock {
   /** Echoed in the ack or error that answers it */
   ref?: number | null;
   type: 'open_block';
   block: string | null;
+  networks?: number[] | null;
 }
 
 /** Values sampled at the end of every scan, sent as batches of samples. */
@@ -239,13 +244,17 @@ export interface WatchValue {
   error: string | null;
 }
 
-/** One sampled execution of the open block: rows for the instructions that ran. */
+/**
+ * One sampled execution of the open block: rows for the instructions that ran, and for a
+ * LAD/FBD block the status of each element that ran (an element absent did not run).
+ */
 export interface BlockStatus {
   block: string;
-  language: 'stl' | 'scl';
+  language: 'stl' | 'scl' | 'lad' | 'fbd';
   scan: number;
   instructions: InstructionStatus[];
   lines: LineStatus[];
+  elements: ElementStatus[];
 }
 
 export interface TrendSample {
@@ -307,6 +316,28 @@ export interface InstructionStatus {
 export interface LineStatus {
   line: number;
   values: Record<string, boolean | number | string | null>;
+}
+
+/**
+ * A LAD/FBD element in one sampled execution, as TIA Portal draws its power flow.
+ *
+ * `value`: the operand as the element read or wrote it (a contact's or status contact's
+ * bit, a coil's bit after it, a midline's bit, an edge's memory bit, POS/NEG the bit it
+ * watches; a timer or counter box or coil: its current value as the watch shows it).
+ * `out`: the element's Boolean result (contacts: null, the client computes the flow from
+ * `value` and the tree; NOT, an edge, a midline: the power flow out of it; a compare or
+ * POS/NEG box: its result, which the flow passes in series; an EN/ENO box or a call: its ENO;
+ * a timer, counter or flip-flop box: its Q; a coil, jump or RET: the power flow into it).
+ * `pins`: a box's pins by name, inputs as read and outputs as written (a pin whose
+ * instructions did not run, as in a box whose EN was 0, is absent).
+ */
+export interface ElementStatus {
+  network: number;
+  /** The element id in its network (e1, e2 ... in reading order) */
+  id: string;
+  value: boolean | number | string | null;
+  out: boolean | null;
+  pins: Record<string, boolean | number | string | null>;
 }
 
 export interface StackFrame {

@@ -423,3 +423,64 @@ def test_continue_after_a_short_hold_keeps_the_virtual_pace(loop: Monitor) -> No
     loop.drain(0.25)
     ran = loop.cpu["scans"] - start
     assert ran <= 45, f"{ran} scans in 0.25 s after the hold (virtual, 10 ms a cycle)"
+
+
+# -- a LAD block ---------------------------------------------------------------------------------
+
+LAD_OB1 = """\
+ORGANIZATION_BLOCK OB 1
+BEGIN
+NETWORK
+TITLE = count the scans
+RUNG Box(ADD_I, IN1 := MW 20, IN2 := 1, OUT => MW 20) END_RUNG
+NETWORK
+TITLE = the lamp
+RUNG Contact(I 0.0) Coil(Q 0.0) END_RUNG
+NETWORK
+TITLE = the latch
+RUNG
+  PARALLEL
+    BRANCH Contact(I 0.1) END_BRANCH
+    BRANCH Contact(M 1.0) END_BRANCH
+  END_PARALLEL
+  ContactNC(I 0.2)
+  Coil(M 1.0)
+END_RUNG
+END_ORGANIZATION_BLOCK
+"""
+
+
+@pytest.fixture
+def ladder(live: LiveServer) -> Iterator[Monitor]:
+    yield from _client(live, [source("main.lad", LAD_OB1)])
+
+
+def test_a_lad_block_holds_at_a_network_and_steps_by_network(ladder: Monitor) -> None:
+    """The graphical editors' breakpoints: a network of a LAD block, a step to the next network,
+    continue; with a condition the hold waits for it."""
+    set_ = _breakpoint(ladder, block="OB1", network=2)
+    assert set_["where"] == "OB1 network 2"
+    ladder.ok("run")
+    hold = ladder.until_held()
+    assert hold["breakpoint"] == set_["id"]
+    assert (hold["location"]["block"], hold["location"]["network"]) == ("OB1", 2)
+    assert hold["location"]["file"] == "main.lad"
+    ladder.ok("clear_breakpoint")
+    hold = ladder.step("network")
+    assert (hold["location"]["block"], hold["location"]["network"]) == ("OB1", 3)
+    assert ladder.cpu is not None
+    scans = ladder.cpu["scans"]
+    ladder.ok("continue")
+    ladder.until(lambda m: m.released and m.hold is None, "the release")
+    ladder.until_scans(scans + 3)
+
+    # With a condition the hold waits for it: scans go on while the input is off.
+    conditioned = _breakpoint(ladder, "I0.0 = 1", block="OB1", network=2)
+    ladder.until_scans(ladder.cpu["scans"] + 5)
+    assert ladder.hold is None
+    ladder.ok("set_input", address="I0.0", value=True)
+    hold = _held(ladder, "network 2 with I0.0 on", block="OB1", network=2)
+    assert hold["breakpoint"] == conditioned["id"]
+    ladder.ok("clear_breakpoint")
+    ladder.ok("continue")
+    ladder.until(lambda m: m.released and m.hold is None, "the release")

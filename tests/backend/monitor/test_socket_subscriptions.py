@@ -242,6 +242,15 @@ def test_open_block_stl_rows_hold_the_registers_the_program_computes(plant: Moni
     assert (_row(block, 7)["rlo"], _row(block, 7)["sta"]) == (0, 1)
     assert (_row(block, 8)["operand"], _row(block, 8)["rlo"]) == (False, 0)
 
+    # Only the networks on screen: network 3 is instructions 6 to 8.
+    plant.ok("open_block", block="OB1", networks=[3])
+    # (A frame sent before the ack may still bring the whole block: wait for the new one.)
+    block = plant.until(
+        lambda m: m.block if m.block and m.block["instructions"][0]["index"] >= 6 else None,
+        "network 3 only",
+    )
+    assert [row["index"] for row in block["instructions"]] == [6, 7, 8]
+    assert block["elements"] == []
     plant.ok("open_block", block=None)
 
 
@@ -321,3 +330,53 @@ def test_trend_samples_every_scan(plant: Monitor) -> None:
 
     plant.until(lambda m: len(new_samples(m)) > 3, "samples of the new list")
     assert all(s["values"] == [5] for s in new_samples(plant))
+
+
+# -- LAD element status ---------------------------------------------------------------------
+
+LATCH = """\
+ORGANIZATION_BLOCK OB 1
+BEGIN
+NETWORK
+RUNG Contact(I 0.0) Coil(Q 0.0) END_RUNG
+NETWORK
+RUNG
+  PARALLEL
+    BRANCH Contact(I 0.1) END_BRANCH
+    BRANCH Contact(M 1.0) END_BRANCH
+  END_PARALLEL
+  ContactNC(I 0.2)
+  Coil(M 1.0)
+END_RUNG
+END_ORGANIZATION_BLOCK
+"""
+
+
+def test_open_block_of_a_lad_block_reports_the_elements_of_its_networks_on_screen(
+    live: LiveServer,
+) -> None:
+    session_id = live.create([source("main.lad", LATCH)])["id"]
+    try:
+        with live.monitor(session_id) as client:
+            ack = client.ok("open_block", block="OB1", networks=[2])
+            assert ack["language"] == "lad"
+            client.ok("run")
+            block = client.until(lambda m: m.block, "the block status")
+            assert block["language"] == "lad"
+            assert {e["network"] for e in block["elements"]} == {2}
+            # Network 1 (instructions 0 and 1) is not recorded.
+            assert min(row["index"] for row in block["instructions"]) == 2
+            client.ok("set_input", address="I0.1", value=True)
+
+            def latched(m: Monitor) -> dict[str, Any] | None:
+                found = {e["id"]: e for e in (m.block or {}).get("elements", [])}
+                coil = found.get("e5")
+                return found if coil is not None and coil["value"] is True else None
+
+            found = client.until(latched, "the latch coil on")
+            assert found["e2"]["value"] is True  # I 0.1
+            assert found["e5"]["out"] is True
+            assert found["e1"] == {"network": 2, "id": "e1", "value": None, "out": None, "pins": {}}
+            client.fails("open_block", "MON601", block="OB1", networks=[0])
+    finally:
+        live.delete(session_id)
