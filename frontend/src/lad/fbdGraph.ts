@@ -13,23 +13,29 @@
  * operand is a node without a box, its text and negation on its output port); an empty one has no
  * nodes. The walk tells nodes apart by object identity, as the Python walk does by `id()`.
  */
-import { flowPins } from './boxes';
+import { boxSpec, flowPins } from './boxes';
 import type { FbdFinal, FbdLayout, FbdLayoutEdge, FbdLayoutNode, FbdLogic, FbdNetwork, FbdNode, FbdPort } from './model';
 
 type Node = FbdNode | FbdFinal;
-type Pin = readonly [name: string, value: string | FbdNode];
+type Pin = readonly [name: string, value: string | FbdNode | null];
 
 const TITLES = { AND: '&', OR: '>=1', XOR: 'XOR' } as const;
 const OTHER_TITLES: Readonly<Record<string, string>> = { not: 'NOT', ret: 'RET', opn: 'OPN' };
 
-/** The node's input pins in drawing order, each with its operand text or feeding node. */
+/**
+ * The node's input pins in drawing order, each with its operand text or feeding node (null: a pin
+ * of a catalogued box nothing is connected to; such a box shows all its pins in catalogue order).
+ */
 function inputsOf(node: Node): Pin[] {
   switch (node.kind) {
     case 'logic':
       return node.inputs.map((item, index) => [`IN${index + 1}`, item] as const);
     case 'box': {
       const flowIn = flowPins(node.name)[0] ?? 'EN';
-      const pins = Object.entries(node.inputs);
+      const spec = boxSpec(node.name);
+      const names = spec ? spec.inputs.filter((pin) => pin.name !== flowIn).map((pin) => pin.name) : [];
+      for (const name of Object.keys(node.inputs)) if (!names.includes(name)) names.push(name);
+      const pins: Pin[] = names.map((name) => [name, node.inputs[name] ?? null] as const);
       return node.en === null ? pins : [[flowIn, node.en], ...pins];
     }
     case 'operand':
@@ -51,8 +57,10 @@ function outputsOf(node: Node): [string, string | null][] {
       return [['OUT', node.bit]];
     case 'box': {
       const flowOut = flowPins(node.name)[1] ?? 'OUT';
-      const pins = Object.entries(node.outputs).filter(([name]) => name !== flowOut);
-      return [[flowOut, node.outputs[flowOut] ?? null], ...pins];
+      const spec = boxSpec(node.name);
+      const names = spec ? spec.outputs.filter((pin) => pin.name !== flowOut).map((pin) => pin.name) : [];
+      for (const name of Object.keys(node.outputs)) if (name !== flowOut && !names.includes(name)) names.push(name);
+      return [[flowOut, node.outputs[flowOut] ?? null], ...names.map((name) => [name, node.outputs[name] ?? null] as [string, string | null])];
     }
     case 'assign':
     case 'jump':
@@ -134,7 +142,7 @@ class Layering {
       if (node.op === 'AND' && node.id && !this.ands.has(node.id)) this.ands.set(node.id, node);
       if (node.flow !== null) this.mark(node.flow, seen);
     }
-    for (const [, value] of inputsOf(node)) if (typeof value !== 'string') this.mark(value, seen);
+    for (const [, value] of inputsOf(node)) if (value !== null && typeof value !== 'string') this.mark(value, seen);
   }
 
   /**
@@ -161,6 +169,7 @@ class Layering {
     this.depth.set(node, depth);
     this.path.add(node);
     for (const [, value] of inputsOf(node)) {
+      if (value === null) continue;
       const fed = this.resolve(value, node);
       if (typeof fed === 'string' || isPinLabel(fed)) continue;
       if (this.path.has(fed)) {
@@ -202,8 +211,12 @@ function portsAndEdges(walk: Layering, node: Node, name: string): { ports: FbdPo
   const edges: FbdLayoutEdge[] = [];
   inputsOf(node).forEach(([pin, value], index) => {
     const port = `${name}.W.${index}`;
+    const west = (label: string | null = null, negated = false, element: string | null = null, open = false): FbdPort => ({ id: port, name: pin, side: 'WEST', index, label, negated, element, open });
+    if (value === null) {
+      ports.push(west(null, false, null, true));
+      return;
+    }
     const fed = walk.resolve(value, node);
-    const west = (label: string | null = null, negated = false, element: string | null = null): FbdPort => ({ id: port, name: pin, side: 'WEST', index, label, negated, element });
     if (typeof fed === 'string') {
       ports.push(west(fed));
     } else if (fed.kind === 'operand') {
@@ -223,7 +236,10 @@ function portsAndEdges(walk: Layering, node: Node, name: string): { ports: FbdPo
   const lone = node.kind === 'operand' || node.kind === 'status';
   const negated = lone && node.negated;
   const element = lone ? node.id || null : null;
-  outputs.forEach(([pin, label], index) => ports.push({ id: `${name}.E.${index}`, name: pin, side: 'EAST', index, label, negated, element }));
+  const isBox = node.kind === 'box';
+  outputs.forEach(([pin, label], index) =>
+    ports.push({ id: `${name}.E.${index}`, name: pin, side: 'EAST', index, label, negated, element, open: isBox && index > 0 && label === null }),
+  );
   return { ports, edges, outputs: outputs.length };
 }
 

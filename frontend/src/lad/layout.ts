@@ -14,7 +14,7 @@
  * Each wire and link names the power flow it carries, so the editor colours it from a flow map
  * without walking the tree: `rail` (the left rail), `<id>` (out of element id), `<id>:in` (into it).
  */
-import { flowPins } from './boxes';
+import { boxSpec, flowPins } from './boxes';
 import type { Box, Element, Final, LadCell, LadLayout, LadLink, LadPin, LadRegion, LadWire, Network, Parallel, Series } from './model';
 
 type Size = readonly [width: number, height: number];
@@ -48,8 +48,8 @@ function elementSize(element: Element | Final): Size {
 function boxRows(box: Box): Size {
   let pinsWidth = 0;
   let row = 1;
-  for (const value of Object.values(box.inputs)) {
-    if (typeof value === 'string') {
+  for (const [, value] of pinInputs(box)) {
+    if (value === null || typeof value === 'string') {
       row += 1;
     } else {
       const [w, h] = seriesSize(value);
@@ -65,10 +65,30 @@ function flowAfter(series: Series, into: string): string {
   return series.elements[series.elements.length - 1]?.id ?? into;
 }
 
-/** The output pins below the top row: all but the one the power flow leaves by. */
-function pinOutputs(box: Box): [string, string][] {
+/**
+ * The input pins below the top row. A catalogued box has all its pins in the catalogue's order
+ * (null: not connected; its flow pin only when written out), then any pin it does not know; a
+ * call, the pins written, in their order (its interface is the called block's).
+ */
+function pinInputs(box: Box): [string, string | Series | null][] {
+  const spec = boxSpec(box.name);
+  if (spec === null) return Object.entries(box.inputs);
+  const flowIn = flowPins(box.name)[0];
+  const names = spec.inputs.filter((pin) => pin.name !== flowIn || pin.name in box.inputs).map((pin) => pin.name);
+  for (const name of Object.keys(box.inputs)) if (!names.includes(name)) names.push(name);
+  return names.map((name) => [name, box.inputs[name] ?? null]);
+}
+
+/**
+ * The output pins below the top row: all but the one the power flow leaves by (a catalogued
+ * box: all of them in the catalogue's order, null where not connected).
+ */
+function pinOutputs(box: Box): [string, string | null][] {
   const flowOut = flowPins(box.name)[1];
-  return Object.entries(box.outputs).filter(([name]) => name !== flowOut);
+  const spec = boxSpec(box.name);
+  const names = spec === null ? [] : spec.outputs.filter((pin) => pin.name !== flowOut).map((pin) => pin.name);
+  for (const name of Object.keys(box.outputs)) if (name !== flowOut && !names.includes(name)) names.push(name);
+  return names.map((name) => [name, box.outputs[name] ?? null]);
 }
 
 // --- placing ---------------------------------------------------------------------------------
@@ -81,8 +101,8 @@ function link(column: number, fromRow: number, toRow: number, flow: string): Lad
   return { column, from_row: fromRow, to_row: toRow, flow };
 }
 
-function pin(name: string, side: LadPin['side'], row: number, operand: string | null = null): LadPin {
-  return { name, side, row, operand };
+function pin(name: string, side: LadPin['side'], row: number, operand: string | null = null, open = false): LadPin {
+  return { name, side, row, operand, open };
 }
 
 /** The cells, regions, links and wires placed so far. */
@@ -132,9 +152,9 @@ class Grid {
     const [flowIn, flowOut] = flowPins(box.name);
     const pins: LadPin[] = flowIn === null ? [] : [pin(flowIn, 'left', row)];
     let nextRow = row + 1;
-    for (const [name, value] of Object.entries(box.inputs)) {
-      if (typeof value === 'string') {
-        pins.push(pin(name, 'left', nextRow, value));
+    for (const [name, value] of pinInputs(box)) {
+      if (value === null || typeof value === 'string') {
+        pins.push(pin(name, 'left', nextRow, value, value === null));
         nextRow += 1;
         continue;
       }
@@ -145,7 +165,7 @@ class Grid {
       nextRow += seriesSize(value)[1];
     }
     if (flowOut !== null) pins.push(pin(flowOut, 'right', row, box.outputs[flowOut] ?? null));
-    pinOutputs(box).forEach(([name, operand], index) => pins.push(pin(name, 'right', row + 1 + index, operand)));
+    pinOutputs(box).forEach(([name, operand], index) => pins.push(pin(name, 'right', row + 1 + index, operand, !operand)));
     this.cells.push({ id: box.id, kind: box.kind, column: at, row, width: 2, height: rows, pins });
     return at + 2;
   }

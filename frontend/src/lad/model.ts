@@ -399,12 +399,17 @@ export interface LadWire {
   flow: string;
 }
 
-/** Where a box pin meets its wire, with the operand written at it (if any). */
+/**
+ * Where a box pin meets its wire, with the operand written at it (if any); `open`: a pin
+ * of a catalogued box that nothing is connected to (drawn so it can be connected, as TIA
+ * Portal draws every pin of a box).
+ */
 export interface LadPin {
   name: string;
   side: 'left' | 'right';
   row: number;
   operand: string | null;
+  open: boolean;
 }
 
 export interface FbdLayout {
@@ -441,7 +446,7 @@ export interface FbdLayoutEdge {
  * A pin: `id` is `<node>.<side>.<index>`; `label` the operand written at it,
  * `negated` its negation circle; `element` the LAD element that operand is (the contact or
  * status bit, so the editor selects it and shows its status there), None for a box's own
- * operand or a wire.
+ * operand or a wire; `open`: a pin of a catalogued box nothing is connected to.
  */
 export interface FbdPort {
   id: string;
@@ -451,4 +456,5 @@ export interface FbdPort {
   label: string | null;
   negated: boolean;
   element: string | null;
+  open: boolean;
 }

@@ -31,6 +31,7 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict
 
+from nasaq.lang.lad.boxes import box_spec
 from nasaq.lang.lad.fbd import flow_pins
 from nasaq.lang.lad.layout_fbd import FbdLayout, fbd_layout
 from nasaq.lang.lad.model import Box, Element, Final, Network, Parallel, Series
@@ -43,12 +44,15 @@ class _Frozen(BaseModel):
 
 
 class LadPin(_Frozen):
-    """Where a box pin meets its wire, with the operand written at it (if any)."""
+    """Where a box pin meets its wire, with the operand written at it (if any); ``open``: a pin
+    of a catalogued box that nothing is connected to (drawn so it can be connected, as TIA
+    Portal draws every pin of a box)."""
 
     name: str
     side: Literal["left", "right"]
     row: int
     operand: str | None = None
+    open: bool = False
 
 
 class LadCell(_Frozen):
@@ -142,7 +146,7 @@ def _element_size(element: Element | Final) -> tuple[int, int]:
 def _box_rows(box: Box) -> tuple[int, int]:
     """The width of the logic drawn into the box's pins, and the rows the box needs."""
     pins_width, row = 0, 1
-    for value in box.inputs.values():
+    for _, value in _pin_inputs(box):
         if isinstance(value, Series):
             w, h = _series_size(value)
             pins_width, row = max(pins_width, w), row + h
@@ -156,10 +160,27 @@ def _flow_after(series: Series, into: str) -> str:
     return series.elements[-1].id if series.elements else into
 
 
-def _pin_outputs(box: Box) -> list[tuple[str, str]]:
-    """The output pins below the top row: all but the one the power flow leaves by."""
+def _pin_inputs(box: Box) -> list[tuple[str, str | Series | None]]:
+    """The input pins below the top row. A catalogued box has all its pins in the catalogue's
+    order (None: not connected; its flow pin only when written out), then any pin it does not
+    know; a call, the pins written, in their order (its interface is the called block's)."""
+    spec = box_spec(box.name)
+    if spec is None:
+        return list(box.inputs.items())
+    flow_in = flow_pins(box.name)[0]
+    names = [pin.name for pin in spec.inputs if pin.name != flow_in or pin.name in box.inputs]
+    names += [name for name in box.inputs if name not in names]
+    return [(name, box.inputs.get(name)) for name in names]
+
+
+def _pin_outputs(box: Box) -> list[tuple[str, str | None]]:
+    """The output pins below the top row: all but the one the power flow leaves by (a
+    catalogued box: all of them in the catalogue's order, None where not connected)."""
     flow_out = flow_pins(box.name)[1]
-    return [(name, operand) for name, operand in box.outputs.items() if name != flow_out]
+    spec = box_spec(box.name)
+    names = [] if spec is None else [pin.name for pin in spec.outputs if pin.name != flow_out]
+    names += [name for name in box.outputs if name != flow_out and name not in names]
+    return [(name, box.outputs.get(name)) for name in names]
 
 
 # --- placing ---------------------------------------------------------------------------------
@@ -219,7 +240,7 @@ class _Grid:
         flow_in, flow_out = flow_pins(box.name)
         pins = [] if flow_in is None else [LadPin(name=flow_in, side="left", row=row)]
         next_row = row + 1
-        for name, value in box.inputs.items():
+        for name, value in _pin_inputs(box):
             if isinstance(value, Series):
                 end = self.series(value, column, next_row)
                 if end < at:
@@ -230,13 +251,15 @@ class _Grid:
                 pins.append(LadPin(name=name, side="left", row=next_row))
                 next_row += _series_size(value)[1]
             else:
-                pins.append(LadPin(name=name, side="left", row=next_row, operand=value))
+                pins.append(
+                    LadPin(name=name, side="left", row=next_row, operand=value, open=value is None)
+                )
                 next_row += 1
         if flow_out is not None:
             operand = box.outputs.get(flow_out)
             pins.append(LadPin(name=flow_out, side="right", row=row, operand=operand))
         pins.extend(
-            LadPin(name=name, side="right", row=row + 1 + index, operand=operand)
+            LadPin(name=name, side="right", row=row + 1 + index, operand=operand, open=not operand)
             for index, (name, operand) in enumerate(_pin_outputs(box))
         )
         self.cells.append(

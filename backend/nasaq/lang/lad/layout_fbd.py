@@ -24,6 +24,7 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict
 
+from nasaq.lang.lad.boxes import box_spec
 from nasaq.lang.lad.fbd import (
     FbdAssign,
     FbdBox,
@@ -51,7 +52,7 @@ class FbdPort(_Frozen):
     """A pin: ``id`` is ``<node>.<side>.<index>``; ``label`` the operand written at it,
     ``negated`` its negation circle; ``element`` the LAD element that operand is (the contact or
     status bit, so the editor selects it and shows its status there), None for a box's own
-    operand or a wire."""
+    operand or a wire; ``open``: a pin of a catalogued box nothing is connected to."""
 
     id: str
     name: str
@@ -60,6 +61,7 @@ class FbdPort(_Frozen):
     label: str | None = None
     negated: bool = False
     element: str | None = None
+    open: bool = False
 
 
 class FbdLayoutNode(_Frozen):
@@ -95,13 +97,18 @@ _Box = FbdNode | FbdFinal
 _TITLES = {"AND": "&", "OR": ">=1", "XOR": "XOR"}
 
 
-def _inputs(node: _Box) -> list[tuple[str, str | FbdNode]]:
-    """The node's input pins in drawing order, each with its operand text or feeding node."""
+def _inputs(node: _Box) -> list[tuple[str, str | FbdNode | None]]:
+    """The node's input pins in drawing order, each with its operand text or feeding node
+    (None: a pin of a catalogued box nothing is connected to; a catalogued box shows all its
+    pins in the catalogue's order, as in LAD)."""
     if isinstance(node, FbdLogic):
         return [(f"IN{index + 1}", item) for index, item in enumerate(node.inputs)]
     if isinstance(node, FbdBox):
         flow_in = flow_pins(node.name)[0] or "EN"
-        pins = list(node.inputs.items())
+        spec = box_spec(node.name)
+        names = [] if spec is None else [p.name for p in spec.inputs if p.name != flow_in]
+        names += [name for name in node.inputs if name not in names]
+        pins: list[tuple[str, str | FbdNode | None]] = [(n, node.inputs.get(n)) for n in names]
         return pins if node.en is None else [(flow_in, node.en), *pins]
     if isinstance(node, FbdOperand | FbdStatus | FbdBranch):
         return []
@@ -115,8 +122,10 @@ def _outputs(node: _Box) -> list[tuple[str, str | None]]:
         return [("OUT", node.bit)]
     if isinstance(node, FbdBox):
         flow_out = flow_pins(node.name)[1] or "OUT"
-        pins = [(name, operand) for name, operand in node.outputs.items() if name != flow_out]
-        return [(flow_out, node.outputs.get(flow_out)), *pins]
+        spec = box_spec(node.name)
+        names = [] if spec is None else [p.name for p in spec.outputs if p.name != flow_out]
+        names += [name for name in node.outputs if name != flow_out and name not in names]
+        return [(flow_out, node.outputs.get(flow_out)), *((n, node.outputs.get(n)) for n in names)]
     if isinstance(node, FbdAssign | FbdJump | FbdReturn | FbdOpenDb):
         return []
     return [("OUT", None)]
@@ -175,7 +184,7 @@ class _Layering:
             if node.flow is not None:
                 self._mark(node.flow, seen)
         for _, value in _inputs(node):
-            if not isinstance(value, str):
+            if value is not None and not isinstance(value, str):
                 self._mark(value, seen)
 
     def resolve(self, node: str | FbdNode, owner: _Box) -> str | FbdNode:
@@ -199,6 +208,8 @@ class _Layering:
         self.depth[key] = depth
         self.path.add(key)
         for _, value in _inputs(node):
+            if value is None:
+                continue
             fed = self.resolve(value, node)
             if isinstance(fed, str | FbdOperand | FbdStatus | FbdBranch):
                 continue
@@ -237,6 +248,9 @@ def _west(walk: _Layering, node: _Box, name: str) -> tuple[list[FbdPort], list[F
     edges: list[FbdLayoutEdge] = []
     for index, (pin, value) in enumerate(_inputs(node)):
         port = f"{name}.W.{index}"
+        if value is None:
+            ports.append(FbdPort(id=port, name=pin, side="WEST", index=index, open=True))
+            continue
         fed = walk.resolve(value, node)
         if isinstance(fed, str):
             ports.append(FbdPort(id=port, name=pin, side="WEST", index=index, label=fed))
@@ -283,6 +297,7 @@ def _east(node: _Box, name: str) -> list[FbdPort]:
             label=label,
             negated=negated,
             element=element,
+            open=isinstance(node, FbdBox) and index > 0 and label is None,
         )
         for index, (pin, label) in enumerate(_outputs(node))
     ]
