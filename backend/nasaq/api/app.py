@@ -14,8 +14,10 @@ from nasaq import __version__
 from nasaq.api import (
     archive,
     convert,
+    file_convert,
     files,
     health,
+    lad,
     outline,
     projects,
     sessions,
@@ -75,11 +77,13 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     api.include_router(archive.router)  # before projects: /projects/import is no project id
     api.include_router(projects.router)
     api.include_router(files.router)
+    api.include_router(file_convert.router)
     api.include_router(workbench.router)
     api.include_router(symbols.router)
     api.include_router(outline.router)
     api.include_router(sessions.router)
     api.include_router(convert.router)
+    api.include_router(lad.router)
     app.include_router(api)
     install_docs(app)
     install_frontend(app, settings.frontend_dist)  # last: its catch-all route must come after

@@ -74,7 +74,7 @@ def checked_text(name: str, text: str) -> str:
     return text
 
 
-def _file(session: DbSession, project_id: int, name: str) -> tuple[Project, ProjectFile]:
+def found_file(session: DbSession, project_id: int, name: str) -> tuple[Project, ProjectFile]:
     project = found_project(session, project_id)
     found = store.get_file(session, project_id, name)
     if found is None:
@@ -87,7 +87,7 @@ def _room_for_one(session: DbSession, project: Project) -> None:
         raise ApiError("API117", 422, limit=MAX_FILES)
 
 
-def _info(found: ProjectFile | store.FileSummary) -> FileInfo:
+def file_info(found: ProjectFile | store.FileSummary) -> FileInfo:
     size = len(found.text) if isinstance(found, ProjectFile) else found.size
     return FileInfo(
         name=found.name,
@@ -99,24 +99,24 @@ def _info(found: ProjectFile | store.FileSummary) -> FileInfo:
     )
 
 
-def _location(project_id: int, name: str) -> str:
+def file_location(project_id: int, name: str) -> str:
     return f"/api/projects/{project_id}/files/{quote(name)}"  # headers are Latin-1: quote
 
 
-def _taken(exc: store.FileNameTakenError, location: list[str | int]) -> ApiError:
+def name_taken(exc: store.FileNameTakenError, location: list[str | int]) -> ApiError:
     return ApiError("API108", 409, location, name=exc.name)
 
 
 @router.get("", response_model=list[FileInfo], responses=_ERRORS, summary="The files, by name")
 def list_files(project_id: int, session: DbSession) -> list[FileInfo]:
     found_project(session, project_id)
-    return [_info(item) for item in store.list_files(session, project_id)]
+    return [file_info(item) for item in store.list_files(session, project_id)]
 
 
 @router.get("/{name}", response_model=FileOut, responses=_ERRORS, summary="One file with its text")
 def get_file(project_id: int, name: str, session: DbSession) -> FileOut:
-    _, found = _file(session, project_id, name)
-    return FileOut(**_info(found).model_dump(), text=found.text)
+    _, found = found_file(session, project_id, name)
+    return FileOut(**file_info(found).model_dump(), text=found.text)
 
 
 @router.put(
@@ -136,25 +136,25 @@ def save_file(
     try:
         saved, created = store.save_file(session, project, name, body.text, body.base_version)
     except store.FileNameTakenError as exc:
-        raise _taken(exc, ["path", "name"]) from exc
+        raise name_taken(exc, ["path", "name"]) from exc
     except store.StaleFileError as exc:
         raise ApiError(
             "API111", 409, ["body", "base_version"], name=name, current_version=exc.current
         ) from exc
     if created:
         response.status_code = status.HTTP_201_CREATED
-        response.headers["Location"] = _location(project_id, name)
-    return _info(saved)
+        response.headers["Location"] = file_location(project_id, name)
+    return file_info(saved)
 
 
 @router.patch("/{name}", response_model=FileInfo, responses=_ERRORS, summary="Rename a file")
 def rename_file(project_id: int, name: str, body: FileName, session: DbSession) -> FileInfo:
-    project, found = _file(session, project_id, name)
+    project, found = found_file(session, project_id, name)
     try:
         store.rename_file(session, project, found, checked_name(body.name, ["body", "name"]))
     except store.FileNameTakenError as exc:
-        raise _taken(exc, ["body", "name"]) from exc
-    return _info(found)
+        raise name_taken(exc, ["body", "name"]) from exc
+    return file_info(found)
 
 
 @router.post(
@@ -167,21 +167,21 @@ def rename_file(project_id: int, name: str, body: FileName, session: DbSession) 
 def duplicate_file(
     project_id: int, name: str, body: FileName, session: DbSession, response: Response
 ) -> FileInfo:
-    project, found = _file(session, project_id, name)
+    project, found = found_file(session, project_id, name)
     new_name = checked_name(body.name, ["body", "name"])
     _room_for_one(session, project)
     try:
         copy = store.duplicate_file(session, project, found, new_name)
     except store.FileNameTakenError as exc:
-        raise _taken(exc, ["body", "name"]) from exc
-    response.headers["Location"] = _location(project_id, new_name)
-    return _info(copy)
+        raise name_taken(exc, ["body", "name"]) from exc
+    response.headers["Location"] = file_location(project_id, new_name)
+    return file_info(copy)
 
 
 @router.delete(
     "/{name}", status_code=status.HTTP_204_NO_CONTENT, responses=_ERRORS, summary="Delete a file"
 )
 def delete_file(project_id: int, name: str, session: DbSession) -> Response:
-    project, found = _file(session, project_id, name)
+    project, found = found_file(session, project_id, name)
     store.delete_file(session, project, found)
     return Response(status_code=status.HTTP_204_NO_CONTENT)

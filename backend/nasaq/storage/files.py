@@ -151,6 +151,16 @@ def duplicate_file(
     return add_file(session, project, name, found.text)
 
 
+def replace_file(
+    session: Session, project: Project, found: ProjectFile, name: str, text: str
+) -> ProjectFile:
+    """``found`` becomes the new file ``name`` with ``text`` (a conversion): both changes in the
+    session's one transaction, so neither is kept without the other."""
+    created = add_file(session, project, name, text)
+    delete_file(session, project, found)
+    return created
+
+
 def delete_file(session: Session, project: Project, found: ProjectFile) -> None:
     session.delete(found)
     project.updated_at = utc_now()

@@ -20,6 +20,7 @@ from nasaq.lang.lad.from_stl import LiftedBlock, NotConvertible, lift_block
 from nasaq.lang.lad.model import LadBlock, Network
 from nasaq.lang.lad.text import SUFFIXES as LAD_SUFFIXES
 from nasaq.lang.lad.text import number_network, parse_lad, print_lad
+from nasaq.lang.lad.to_stl import temp_prefix
 
 Target = Literal["stl", "lad", "fbd"]
 TARGETS: tuple[Target, ...] = ("stl", "lad", "fbd")
@@ -90,17 +91,16 @@ def _from_stl(name: str, text: str, to: Target) -> Converted:
             else number_network(network)  # ids, as a parsed file has them
             for k, network in enumerate(block.networks)
         ]
-        blocks.append(
-            LadBlock(
-                language="FBD" if to == "fbd" else "LAD",
-                kind=block.kind,
-                name=block.name,
-                return_type=_return_type(lines, head) if block.kind == "FC" else None,
-                title=block.title,
-                declarations=declarations,
-                networks=networks,
-            )
+        drawn = LadBlock(
+            language="FBD" if to == "fbd" else "LAD",
+            kind=block.kind,
+            name=block.name,
+            return_type=_return_type(lines, head) if block.kind == "FC" else None,
+            title=block.title,
+            networks=networks,
         )
+        declarations = without_lowering_temps(declarations, print_lad([drawn]))
+        blocks.append(drawn.model_copy(update={"declarations": declarations}))
     converted, kept = lifted.counts()
     return Converted(print_lad(blocks), list(lifted.diagnostics), converted, kept, blocks)
 
@@ -108,6 +108,30 @@ def _from_stl(name: str, text: str, to: Target) -> Converted:
 def _block_heads(text: str) -> list[int]:
     """The 0-based line of each code block's header, in order (DBs and UDTs are not here)."""
     return [text.count("\n", 0, match.start()) for match in _BLOCK.finditer(text)]
+
+
+_TEMPS = re.compile(r"(?:\A|\n)VAR_TEMP\n((?:  (_lad\d*_t)\d+ : BOOL;\n)+)END_VAR\Z", re.IGNORECASE)
+_TEMP_LINE = re.compile(r"  (_lad\d*_t)(\d+) : BOOL;")
+
+
+def without_lowering_temps(declarations: str, body: str) -> str:
+    """The declarations without the ``VAR_TEMP`` section the lowering appended for its
+    temporaries (``_lad_t0 : BOOL;`` ...; ``_lad2_t`` when the declarations use ``_lad_t``), so
+    that lowering the converted block again declares them once. Dropped only when it is that
+    section exactly: at the end, numbered from 0, the prefix the lowering would choose for the
+    declarations left, and named nowhere in the block's networks (``body``, its text)."""
+    found = _TEMPS.search(declarations)
+    if found is None:
+        return declarations
+    prefix = found.group(2)
+    numbers = [
+        line.group(2) for line in _TEMP_LINE.finditer(found.group(1)) if line.group(1) == prefix
+    ]
+    kept = declarations[: found.start()]
+    generated = numbers == [str(k) for k in range(len(numbers))]
+    if not generated or temp_prefix(kept) != prefix or prefix.lower() in body.lower():
+        return declarations
+    return kept
 
 
 def _return_type(lines: list[str], head: int | None) -> str | None:

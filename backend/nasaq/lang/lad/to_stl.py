@@ -336,7 +336,8 @@ def _labels_taken(block: LadBlock) -> list[str]:
     return taken
 
 
-def _temp_prefix(declarations: str) -> str:
+def temp_prefix(declarations: str) -> str:
+    """The name of the lowering's temporaries (``_lad_t`` unless the declarations use it)."""
     lowered = declarations.lower()
     prefix, attempt = "_lad_t", 1
     while prefix in lowered:
@@ -378,7 +379,7 @@ def lower_block(block: LadBlock) -> LoweredBlock:
     """A complete STL source of the block (header, the declarations as they are, temporaries,
     networks) for ``compile_sources``, the problems found while lowering, and the element of
     each line."""
-    labels = LabelMaker(_labels_taken(block), _temp_prefix(block.declarations))
+    labels = LabelMaker(_labels_taken(block), temp_prefix(block.declarations))
     body = _Source()
     for number, network in enumerate(block.networks, start=1):
         labels.network = number

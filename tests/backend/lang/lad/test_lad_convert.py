@@ -12,7 +12,8 @@ from lad_to_stl_run import get, put, scan
 from nasaq.cli import main
 from nasaq.cpu import Cpu
 from nasaq.lang.lad.convert import convert
-from nasaq.lang.lad.text import parse_lad
+from nasaq.lang.lad.model import Series
+from nasaq.lang.lad.text import parse_lad, print_lad
 from nasaq.lang.stl import SourceFile, compile_sources
 
 MIXED_STL = """\
@@ -192,3 +193,125 @@ def test_post_convert_gives_what_the_editors_draw(client: TestClient) -> None:
         "/api/convert", json={"name": "m.lad", "text": fbd.json()["text"], "to": "stl"}
     )
     assert stl.json()["drawings"] is None
+
+
+# ---- LAD → STL → LAD gives the block back -------------------------------------------------------
+
+EXAMPLES = Path(__file__).resolve().parents[4] / "examples" / "lad"
+
+
+def _canonical(text: str, name: str) -> str:
+    """The text as the printer writes its model: comments outside blocks go (the model has
+    none), and a single output's conditions are logic (``to_stl`` lowers them as one chain, so
+    that is the shape STL lifts to)."""
+    blocks, problems = parse_lad(text, name)
+    assert problems == []
+    shaped = []
+    for block in blocks:
+        networks = []
+        for network in block.networks:
+            if len(network.outputs) == 1 and network.outputs[0].conditions.elements:
+                only = network.outputs[0]
+                logic = [*network.logic.elements, *only.conditions.elements]
+                network = network.model_copy(
+                    update={
+                        "logic": network.logic.model_copy(update={"elements": logic}),
+                        "outputs": [only.model_copy(update={"conditions": Series()})],
+                    }
+                )
+            networks.append(network)
+        shaped.append(block.model_copy(update={"networks": networks}))
+    return print_lad(shaped)
+
+
+@pytest.mark.parametrize(
+    "path",
+    sorted([*EXAMPLES.glob("*.lad"), *EXAMPLES.glob("*.fbd")]),
+    ids=lambda path: path.name,
+)
+def test_every_example_comes_back_from_its_stl(path: Path) -> None:
+    text = path.read_text("utf-8")
+    to = "fbd" if path.suffix == ".fbd" else "lad"
+    stl = convert(path.name, text, "stl")
+    back = convert(path.with_suffix(".awl").name, stl.text, to)
+    assert back.kept == 0, back.diagnostics  # every network of the examples lifts
+    assert back.text == _canonical(text, path.name)
+
+
+TEMPS = """\
+FUNCTION_BLOCK FB 3
+VAR_INPUT
+  go : BOOL;
+END_VAR
+BEGIN
+NETWORK
+TITLE = several outputs: the common logic in a temporary
+RUNG
+  Contact(#go)
+  OUTPUTS
+    BRANCH Contact(I 0.1) Coil(Q 0.0) END_BRANCH
+    BRANCH Coil(Q 0.1) END_BRANCH
+  END_OUTPUTS
+END_RUNG
+NETWORK
+TITLE = a parallel acting on the flow
+RUNG
+  Contact(I 0.0)
+  PARALLEL
+    BRANCH Contact(I 0.2) Not END_BRANCH
+    BRANCH Contact(I 0.3) END_BRANCH
+  END_PARALLEL
+  Coil(Q 0.2)
+END_RUNG
+END_FUNCTION_BLOCK
+"""
+
+
+@pytest.mark.parametrize(
+    ("declarations", "prefix"),
+    [
+        ("VAR_INPUT\n  go : BOOL;\nEND_VAR", "_lad_t"),
+        ("VAR_INPUT\n  go : BOOL;\nEND_VAR\nVAR_TEMP\n  _lad_t7 : INT;\nEND_VAR", "_lad2_t"),
+    ],
+)
+def test_the_lowerings_temporaries_are_dropped_on_the_way_back(
+    declarations: str, prefix: str
+) -> None:
+    text = TEMPS.replace("VAR_INPUT\n  go : BOOL;\nEND_VAR", declarations)
+    stl = convert("fb3.lad", text, "stl").text
+    assert f"VAR_TEMP\n  {prefix}0 : BOOL;\nEND_VAR\nBEGIN" in stl  # each network counts from 0
+    back = convert("fb3.awl", stl, "lad")
+    assert back.kept == 0
+    assert back.text == text
+    assert convert("fb3.lad", back.text, "stl").text == stl
+
+
+SECTION = "VAR_TEMP\n  _lad_t0 : BOOL;\nEND_VAR"
+
+
+@pytest.mark.parametrize(
+    ("change", "section"),
+    [
+        # A network that stays STL still reads the temporary.
+        (
+            (
+                "END_FUNCTION_BLOCK",
+                "NETWORK\n      L     MW 0\n      A     #_lad_t0\nEND_FUNCTION_BLOCK",
+            ),
+            SECTION,
+        ),
+        # Not numbered from 0: not what the lowering writes.
+        (
+            ("_lad_t0 : BOOL;\nEND_VAR\nBEGIN", "_lad_t1 : BOOL;\nEND_VAR\nBEGIN"),
+            SECTION.replace("0", "1"),
+        ),
+        # The declarations before it use _lad_t: the lowering would have named it _lad2_t.
+        (("END_VAR\nVAR_TEMP", "END_VAR\nVAR\n  _lad_t9 : INT;\nEND_VAR\nVAR_TEMP"), SECTION),
+    ],
+)
+def test_a_section_that_is_not_the_lowerings_stays(change: tuple[str, str], section: str) -> None:
+    stl = convert("fb3.lad", TEMPS, "stl").text
+    assert change[0] in stl
+    blocks = convert("fb3.awl", stl.replace(*change), "lad").blocks
+    assert blocks is not None
+    assert blocks[0].declarations.endswith(section)
