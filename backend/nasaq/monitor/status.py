@@ -70,6 +70,7 @@ class Recorder:
         size = len(info.block.code)
         self.mask = [True] * size
         self.selected: frozenset[int] | None = None
+        self.entry_only = False  # instruction 0 records only to tell that the block ran
         self._off = [False] * size
         self.active = list(self._off)
         self.elements = elements
@@ -83,6 +84,11 @@ class Recorder:
             return
         owner = self.info.networks
         self.mask = [networks is None or owner[k] in networks for k in range(len(owner))]
+        # The block's first instruction always records: it says whether the block ran at all
+        # (its row is dropped again when its network is not selected).
+        self.entry_only = bool(self.mask) and not self.mask[0]
+        if self.mask:
+            self.mask[0] = True
         self.selected = networks
 
     def attach(self, index: int, extra: Reader) -> None:
@@ -114,7 +120,9 @@ class Recorder:
         """The status of the sampled scan, or the previous one if the block did not run."""
         self.active[:] = self._off
         if not self.rows:
-            return self.last
+            return self.last  # the block did not run in this scan
+        if self.entry_only:
+            self.rows.pop(0, None)
         info = self.info
         instructions: list[InstructionStatus] = []
         lines: dict[int, dict[str, Value]] = {}

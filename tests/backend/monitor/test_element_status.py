@@ -586,3 +586,14 @@ def test_two_clients_see_their_own_networks(plant: Plant) -> None:
         shown = [b for b in blocks if b is not None]
         assert shown, client
         assert {e["network"] for e in shown[-1]["elements"]} == wanted
+
+
+def test_networks_on_screen_jumped_over_show_nothing_not_the_previous_scan(plant: Plant) -> None:
+    """Network 15 runs unless network 14 jumps over it: then the block ran, but nothing on
+    screen did, and the status says so (an empty status, not the previous sample's)."""
+    ran = plant.sample({"I 4.2": False, "I 4.3": True}, [], networks=[15])
+    assert [(s.network, s.id) for s in ran.status.elements] == [(15, "e1"), (15, "e2")]
+    jumped = plant.sample({"I 4.2": True}, [], networks=[15])
+    assert jumped.status.scan > ran.status.scan
+    assert jumped.status.elements == []
+    assert jumped.status.instructions == []
