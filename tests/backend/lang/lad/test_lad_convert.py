@@ -315,3 +315,29 @@ def test_a_section_that_is_not_the_lowerings_stays(change: tuple[str, str], sect
     blocks = convert("fb3.awl", stl.replace(*change), "lad").blocks
     assert blocks is not None
     assert blocks[0].declarations.endswith(section)
+
+
+def test_post_convert_draws_empty_and_unfinished_rungs(client: TestClient) -> None:
+    """An empty STL network lifts to an empty rung, and a rung still being drawn converts
+    between LAD and FBD: both come with what the editors draw."""
+    stl = "ORGANIZATION_BLOCK OB 1\nBEGIN\nNETWORK\nTITLE = new\nNETWORK\nM001: NOP 0\n"
+    stl += "END_ORGANIZATION_BLOCK\n"
+    for to in ("lad", "fbd"):
+        response = client.post("/api/convert", json={"name": "e.awl", "text": stl, "to": to})
+        assert response.status_code == 200, response.text
+        body = response.json()
+        assert (body["converted"], body["kept"]) == (2, 0)
+        assert [n["label"] for n in body["blocks"][0]["networks"]] == [None, "M001"]
+        assert len(body["drawings"][0]) == 2
+    draft = "ORGANIZATION_BLOCK OB 1\nBEGIN\nNETWORK\nRUNG\n  Contact(I 0.0)\n"
+    draft += "  ContactNC(<??.?>)\nEND_RUNG\nEND_ORGANIZATION_BLOCK\n"
+    response = client.post("/api/convert", json={"name": "d.lad", "text": draft, "to": "fbd"})
+    assert response.status_code == 200, response.text
+    [network] = response.json()["blocks"][0]["networks"]
+    assert (len(network["logic"]["elements"]), network["outputs"]) == (2, [])
+    back = client.post(
+        "/api/convert", json={"name": "d.fbd", "text": response.json()["text"], "to": "lad"}
+    )
+    assert back.json()["text"] == draft
+    lowered = client.post("/api/convert", json={"name": "d.lad", "text": draft, "to": "stl"})
+    assert [d["code"] for d in lowered.json()["diagnostics"]] == ["LAD212", "LAD211"]
