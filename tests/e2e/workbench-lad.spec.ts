@@ -1,8 +1,8 @@
 /**
  * A LAD source in the workbench, against the real server: created from the tree's menu, edited
- * as text with its own highlighting, its problems as markers on their lines, autosaved, and the
- * rung run in the simulated CPU from the I/O panel. (The graphical LAD/FBD editors come later;
- * until then the text format is how a LAD block is edited.)
+ * in its text view with its own highlighting, its problems as markers on their lines, autosaved,
+ * and the rung run in the simulated CPU from the I/O panel. (The graphical editor of the same
+ * file is tested in lad-editor.spec.ts.)
  */
 import type { Page } from '@playwright/test';
 import { test, expect, tree, visibleEditor } from './fixtures';
@@ -60,8 +60,10 @@ test('a LAD source is created from the tree, checked while typing, autosaved and
   await dialog.getByTestId('file-name-submit').click();
   await expect(dialog).toBeHidden();
 
-  // The new source compiles (an FC without networks) and opens in the LAD text language.
+  // The new source compiles (an FC without networks); its text view has the LAD text language.
   await expect(tree(page).getByTestId(`block-node-${projectId}-FC1`)).toContainText('LAD');
+  await expect(page.locator('.source-view:not([hidden]) [data-testid="lad-editor"]')).toBeVisible({ timeout: 15_000 });
+  await page.getByTestId('view-text').click();
   const editor = visibleEditor(page);
   await expect(editor).toHaveAttribute('data-state', 'ready', { timeout: 15_000 });
   await expect.poll(() => editorState(page)).toEqual({ language: 'lad', markers: [] });

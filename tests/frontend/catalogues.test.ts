@@ -69,6 +69,10 @@ describe('translation catalogues', () => {
         'problems.mon_bad_value',
         'problems.mon_unknown_target',
         'problemWords.NOT',
+        // The names of the three views of a block are the languages' standard abbreviations.
+        'lad.views.LAD',
+        'lad.views.FBD',
+        'lad.views.STL',
       ].sort(),
     );
   });

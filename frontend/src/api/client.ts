@@ -1,5 +1,6 @@
 import type {
   ApiProblem,
+  Diagnostic,
   ErrorLocation,
   FileInfo,
   FileOut,
@@ -11,6 +12,7 @@ import type {
   ProjectCreate,
   UnsavedFile,
 } from './types';
+import type { LadBlock } from '../lad/model';
 
 /** Codes the client itself gives to failures that never reached an API answer. */
 export const CLIENT_ERROR_CODES = {
@@ -222,4 +224,32 @@ export function importProject(zip: Blob, name?: string): Promise<ImportOut> {
     body: zip,
     headers: { 'Content-Type': 'application/zip' },
   });
+}
+
+/** A LAD/FBD file read as the network model (`POST /api/lad/read`): its blocks and syntax problems. */
+export interface LadRead {
+  blocks: LadBlock[];
+  diagnostics: Diagnostic[];
+}
+
+export function readLad(name: string, text: string, signal?: AbortSignal): Promise<LadRead> {
+  return request<LadRead>('/api/lad/read', { method: 'POST', body: JSON.stringify({ name, text }), signal: signal ?? null });
+}
+
+/** A source converted between STL, LAD and FBD (`POST /api/convert`). */
+export interface Converted {
+  text: string;
+  diagnostics: Diagnostic[];
+  converted: number;
+  kept: number;
+  blocks: LadBlock[] | null;
+}
+
+export function convertSource(name: string, text: string, to: 'stl' | 'lad' | 'fbd', signal?: AbortSignal): Promise<Converted> {
+  return request<Converted>('/api/convert', { method: 'POST', body: JSON.stringify({ name, text, to }), signal: signal ?? null });
+}
+
+/** Turns a project's STL source into a LAD (or FBD) source: the new file replaces it. */
+export function convertFile(projectId: number, name: string, to: 'lad' | 'fbd'): Promise<FileInfo> {
+  return request<FileInfo>(`${fileUrl(projectId, name)}/convert`, { method: 'POST', body: JSON.stringify({ to }) });
 }

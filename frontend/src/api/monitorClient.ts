@@ -234,6 +234,7 @@ export class MonitorClient {
   private watchQueued = false;
   private trendEntries: readonly string[] = [];
   private openBlockName: string | null = null;
+  private openBlockNetworks: number[] | null = null;
   /** The breakpoints the caller wants, by key. */
   private wantedBreakpoints = new Map<string, BreakpointRequest>();
   /** What was sent for each key (the request object) and the id the server gave it. */
@@ -423,7 +424,9 @@ export class MonitorClient {
     this.sentWatch = null;
     this.flushWatch();
     if (this.trendEntries.length > 0) this.sendTrend().catch(() => undefined);
-    if (this.openBlockName !== null) this.sendQuietly({ type: 'open_block', block: this.openBlockName });
+    if (this.openBlockName !== null) {
+      this.sendQuietly({ type: 'open_block', block: this.openBlockName, networks: this.openBlockNetworks });
+    }
     this.resendBreakpoints();
   }
 
@@ -489,12 +492,16 @@ export class MonitorClient {
     if (this.trendEntries === entries) this.update({ trendTypes: types });
   }
 
-  /** The block whose status frames carry, or none. */
-  openBlock(block: string | null): Promise<Record<string, unknown> | null> {
+  /**
+   * The block whose status frames carry, or none; `networks` (1-based) limits the status to the
+   * networks a diagram editor shows, so only those are instrumented.
+   */
+  openBlock(block: string | null, networks: readonly number[] | null = null): Promise<Record<string, unknown> | null> {
     this.openBlockName = block;
+    this.openBlockNetworks = networks ? [...networks] : null;
     if (block === null) this.update({ block: null });
     if (this.state.connection !== 'open') return Promise.resolve(null);
-    return this.send({ type: 'open_block', block });
+    return this.send({ type: 'open_block', block, networks: this.openBlockNetworks });
   }
 
   /**

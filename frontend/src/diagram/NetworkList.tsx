@@ -57,8 +57,6 @@ export const NetworkList = forwardRef<NetworkListHandle, NetworkListProps>(funct
     }
     out[count] = y;
     return out;
-    // heightOf is read through layoutKey: the editor changes it when a height changes.
-    // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [count, layoutKey, heightOf]);
 
   useEffect(() => {

@@ -14,6 +14,7 @@ import { outlines } from './intellisense/outlineStore';
 import { useEditorTabs, type SaveStatus, type SourceTab } from './EditorTabsContext';
 import { useOpenProjectFile } from './useOpenProjectFile';
 import { useSourceFile } from './useSourceFile';
+import { LadSourceViews, StlSourceViews, type DiagramView } from '../lad/DiagramViews';
 import './source.css';
 
 const LANGUAGE_NAMES = { stl: 'STL', scl: 'SCL', lad: 'LAD', fbd: 'FBD' } as const;
@@ -46,6 +47,7 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
   const [notice, setNotice] = useState<string | null>(null);
   const [monitoring, setMonitoring] = useState(() => monitorToggleOf(tab.id));
   const [monitorProblem, setMonitorProblem] = useState<Problem | null>(null);
+  const [diagramView, setDiagramView] = useState<DiagramView | null>(null);
   const noticeTimer = useRef<ReturnType<typeof setTimeout> | null>(null);
   const file = tab.file;
 
@@ -89,9 +91,11 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
     },
     [tab.id],
   );
-  // Monitoring and breakpoints follow STL and SCL lines; a LAD/FBD text gets them with the
-  // graphical editors (its element status needs the rung, not the text).
+  // Monitoring and breakpoints follow STL and SCL lines, and a LAD/FBD block's networks in its
+  // diagram (its element status needs the rung, not the text).
   const codeLanguage = tab.language === 'stl' || tab.language === 'scl' ? tab.language : null;
+  const diagramFile = tab.language === 'lad' || tab.language === 'fbd';
+  const diagramMonitoring = diagramFile && (diagramView === 'LAD' || diagramView === 'FBD');
   const renderExtras: RenderEditorExtras | undefined =
     file && codeLanguage
       ? (editor, monaco) => (
@@ -107,6 +111,24 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
           />
         )
       : undefined;
+
+  const codeEditor = (
+    <CodeEditor
+      value={tab.text}
+      language={tab.language}
+      markers={session.markers}
+      onChange={(text) => updateSource(tab.id, text)}
+      onBlur={file ? session.flush : undefined}
+      reveal={tab.reveal}
+      onGoToDefinition={file ? goToDefinition : undefined}
+      definitionLabel={t('editor.definition.label')}
+      source={file ? { projectId: file.projectId, path: file.path } : null}
+      renderExtras={renderExtras}
+      ariaLabel={label}
+      className="source-view__editor"
+      data-testid="code-editor"
+    />
+  );
 
   return (
     <div className="source-view" hidden={!active} data-testid={`source-view-${tab.id}`}>
@@ -154,21 +176,20 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
           </div>
         </div>
       ) : null}
-      <CodeEditor
-        value={tab.text}
-        language={tab.language}
-        markers={session.markers}
-        onChange={(text) => updateSource(tab.id, text)}
-        onBlur={file ? session.flush : undefined}
-        reveal={tab.reveal}
-        onGoToDefinition={file ? goToDefinition : undefined}
-        definitionLabel={t('editor.definition.label')}
-        source={file ? { projectId: file.projectId, path: file.path } : null}
-        renderExtras={renderExtras}
-        ariaLabel={label}
-        className="source-view__editor"
-        data-testid="code-editor"
-      />
+      {diagramFile ? (
+        <LadSourceViews
+          tab={tab}
+          active={active}
+          monitoring={monitoring && active}
+          onMonitorProblem={setMonitorProblem}
+          onViewChange={setDiagramView}
+          textEditor={codeEditor}
+        />
+      ) : tab.language === 'stl' ? (
+        <StlSourceViews tab={tab} active={active} stlEditor={codeEditor} />
+      ) : (
+        codeEditor
+      )}
       {file ? (
         <div className="source-status" dir={dir} lang={language}>
           <span className="source-status__state" data-testid={`save-state-${tab.id}`} data-state={save.status}>
@@ -177,7 +198,7 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
           <span className="source-status__notice" role="status">
             {notice}
           </span>
-          {codeLanguage ? (
+          {codeLanguage || diagramMonitoring ? (
             <MonitorToggle on={monitoring} onChange={toggleMonitoring} projectId={file.projectId} problem={monitorProblem} />
           ) : null}
         </div>

@@ -2,6 +2,10 @@ import ar from './locales/ar.json';
 import en from './locales/en.json';
 import fa from './locales/fa.json';
 import vi from './locales/vi.json';
+import ladAr from '../lad/locales/ar.json';
+import ladEn from '../lad/locales/en.json';
+import ladFa from '../lad/locales/fa.json';
+import ladVi from '../lad/locales/vi.json';
 
 /** The interface languages, in the order the language switch lists them. */
 export const LANGUAGES = ['en', 'ar', 'fa', 'vi'] as const;
@@ -13,10 +17,18 @@ export const DEFAULT_LANGUAGE: Language = 'en';
 /** Where the user's choice is remembered. */
 export const LANGUAGE_STORAGE_KEY = 'nasaq.lang';
 
-export type Catalogue = typeof en;
+export type Catalogue = typeof en & { lad: typeof ladEn };
 
-/** One catalogue per language; each one says its own name and writing direction. */
-export const CATALOGUES: Record<Language, Catalogue> = { en, ar, fa, vi };
+/**
+ * One catalogue per language; each one says its own name and writing direction. The diagram
+ * editors' texts (`lad.*`) live beside them in `lad/locales/`.
+ */
+export const CATALOGUES: Record<Language, Catalogue> = {
+  en: { ...en, lad: ladEn },
+  ar: { ...ar, lad: ladAr },
+  fa: { ...fa, lad: ladFa },
+  vi: { ...vi, lad: ladVi },
+};
 
 export function isLanguage(value: unknown): value is Language {
   return typeof value === 'string' && (LANGUAGES as readonly string[]).includes(value);

@@ -11,7 +11,7 @@ export interface MenuAction {
 
 interface RowMenuProps {
   /** The element the menu opens beside (a tree row), and gives the focus back to. */
-  anchor: HTMLElement;
+  anchor: Element;
   label: string;
   actions: readonly MenuAction[];
   onClose: (restoreFocus: boolean) => void;

@@ -203,16 +203,19 @@ function sclItems(request: CompletionRequest, block: OutlineBlock | null): Sugge
   return items;
 }
 
-/** The suggestions at the caret; null where nothing should be offered (inside a comment). */
-export function complete(request: CompletionRequest): Completion | null {
-  const lineText = request.text.split('\n')[request.line - 1] ?? '';
-  const before = lineText.slice(0, request.column - 1);
-  const after = lineText.slice(request.column - 1);
-  if (inComment(before)) return null;
-  const catalogue = catalogueOf(request.uiLanguage);
-  const { outline, column } = request;
-  const block = blockAt(outline, request.file, request.line);
-
+/**
+ * Member access (`"Db".`, `DB10.`, `#inst.`), `#` and an open quote: the completions that read
+ * the same in an STL line and in an operand typed on a LAD/FBD element.
+ */
+function accessCompletion(
+  before: string,
+  after: string,
+  column: number,
+  outline: ProjectOutline | null,
+  block: OutlineBlock | null,
+  language: 'stl' | 'scl',
+  catalogue: HelpCatalogue,
+): Completion | null {
   const access = MEMBER_ACCESS.exec(before);
   if (access && quotesBefore(before.slice(0, access.index)) % 2 === 0) {
     const [, quoted, area, number, word, rest = '', partial = ''] = access;
@@ -220,7 +223,7 @@ export function complete(request: CompletionRequest): Completion | null {
     let path = rest.replace(/^\./, '');
     if (quoted !== undefined) base = blockNamed(outline, quoted);
     else if (area !== undefined) base = blockNamed(outline, `DB ${number}`);
-    else if (word !== undefined && (word.startsWith('#') || request.language === 'scl') && block) {
+    else if (word !== undefined && (word.startsWith('#') || language === 'scl') && block) {
       base = block;
       path = [word.replace(/^#/, ''), path].filter(Boolean).join('.');
     }
@@ -252,6 +255,22 @@ export function complete(request: CompletionRequest): Completion | null {
     };
   }
 
+  return null;
+}
+
+/** The suggestions at the caret; null where nothing should be offered (inside a comment). */
+export function complete(request: CompletionRequest): Completion | null {
+  const lineText = request.text.split('\n')[request.line - 1] ?? '';
+  const before = lineText.slice(0, request.column - 1);
+  const after = lineText.slice(request.column - 1);
+  if (inComment(before)) return null;
+  const catalogue = catalogueOf(request.uiLanguage);
+  const { outline, column } = request;
+  const block = blockAt(outline, request.file, request.line);
+
+  const access = accessCompletion(before, after, column, outline, block, request.language, catalogue);
+  if (access) return access;
+
   const partial = WORD.exec(before)?.[0] ?? '';
   if (request.language === 'scl') {
     return { from: column - partial.length, to: column, suggestions: sclItems(request, block) };
@@ -271,4 +290,21 @@ export function complete(request: CompletionRequest): Completion | null {
     ...symbolItems(outline, false, '1', catalogue),
   ];
   return { from: column - partial.length, to: column, suggestions: operands };
+}
+
+/**
+ * What an operand typed on a LAD/FBD element can be, for the text typed so far: members after
+ * `#`, `"Db".` or `DB10.`, symbols after a quote, else the block's members and the symbols.
+ */
+export function completeOperand(typed: string, outline: ProjectOutline | null, block: OutlineBlock | null, uiLanguage: string): Completion {
+  const catalogue = catalogueOf(uiLanguage);
+  const column = typed.length + 1;
+  const access = accessCompletion(typed, '', column, outline, block, 'stl', catalogue);
+  if (access) return access;
+  const partial = WORD.exec(typed)?.[0] ?? '';
+  const suggestions: Suggestion[] = [
+    ...(block?.members.filter((m) => m.depth === 0) ?? []).map((m) => ({ ...memberItem(m, `#${m.name}`, '0'), filterText: m.name })),
+    ...symbolItems(outline, false, '1', catalogue),
+  ];
+  return { from: column - partial.length, to: column, suggestions };
 }

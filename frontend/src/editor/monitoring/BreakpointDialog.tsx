@@ -10,7 +10,9 @@ import { nextCodeLine } from './nextCodeLine';
 interface BreakpointDialogProps {
   projectId: number;
   file: string;
+  /** The source line, or with `block` the network number in that LAD/FBD block. */
   line: number;
+  block?: string;
   onClose: () => void;
   store?: BreakpointStore;
 }
@@ -21,15 +23,15 @@ interface BreakpointDialogProps {
  * the interface language, the latter with the offer to move the breakpoint to the next line with
  * code. Without a session it just saves.
  */
-export function BreakpointDialog({ projectId, file, line, onClose, store = defaultStore }: BreakpointDialogProps) {
+export function BreakpointDialog({ projectId, file, line, block, onClose, store = defaultStore }: BreakpointDialogProps) {
   const { t } = useTranslation();
   const problemText = useProblemText();
   const inputId = useId();
   const [at, setAt] = useState(line);
-  const existing = store.find(projectId, file, at);
+  const existing = store.find(projectId, file, at, block);
   const [condition, setCondition] = useState(existing?.condition ?? '');
   const [enabled, setEnabled] = useState(existing?.enabled ?? true);
-  const key = breakpointKey(projectId, file, at);
+  const key = breakpointKey(projectId, file, at, block);
   const report = useMonitor((state) => state.breakpoints[key]);
   const online = useMonitor((state) => state.connection === 'open');
   /** The report there was when the user saved: the answer to the save is a newer one. */
@@ -42,13 +44,13 @@ export function BreakpointDialog({ projectId, file, line, onClose, store = defau
   }, [answered, report, onClose]);
 
   const shownProblem = report?.state === 'refused' && (waitingSince === null || answered) ? report.problem : null;
-  const moveTo = nextCodeLine(shownProblem);
+  const moveTo = block ? null : nextCodeLine(shownProblem);
 
   function save(event?: FormEvent) {
     event?.preventDefault();
     const text = condition.trim() || null;
     const unchanged = existing && existing.condition === text && existing.enabled === enabled && report?.state !== 'refused';
-    store.put(projectId, file, at, { condition: text, enabled });
+    store.put(projectId, file, at, { condition: text, enabled }, block);
     if (!online || !enabled || unchanged) {
       onClose();
       return;
@@ -66,7 +68,7 @@ export function BreakpointDialog({ projectId, file, line, onClose, store = defau
 
   return (
     <Dialog
-      title={t('debug.dialog.title', { line: at })}
+      title={block ? t('lad.breakpointTitle', { block, network: at }) : t('debug.dialog.title', { line: at })}
       onClose={onClose}
       testId="breakpoint-dialog"
       initialFocus={inputRef}
@@ -78,7 +80,7 @@ export function BreakpointDialog({ projectId, file, line, onClose, store = defau
               className="button"
               data-testid="breakpoint-remove"
               onClick={() => {
-                store.remove(projectId, file, at);
+                store.remove(projectId, file, at, block);
                 onClose();
               }}
             >
@@ -96,9 +98,7 @@ export function BreakpointDialog({ projectId, file, line, onClose, store = defau
     >
       <form id={`${inputId}-form`} className="breakpoint-dialog" onSubmit={save}>
         <p className="breakpoint-dialog__where" dir="ltr">
-          <code>
-            {file}:{at}
-          </code>
+          <code>{block ? `${file}: ${block}, ${t('lad.network.name', { number: at })}` : `${file}:${at}`}</code>
         </p>
         <label htmlFor={inputId}>{t('debug.dialog.condition')}</label>
         <input
