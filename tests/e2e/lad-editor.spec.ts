@@ -6,6 +6,8 @@
  */
 import AxeBuilder from '@axe-core/playwright';
 import type { APIRequestContext, Locator, Page } from '@playwright/test';
+import fs from 'node:fs';
+import path from 'node:path';
 import { test, expect, chooseLanguage, tree } from './fixtures';
 
 const EMPTY_OB1 = `ORGANIZATION_BLOCK OB 1
@@ -261,4 +263,56 @@ test('an operand of the wrong type on a contact is marked on the element', async
   const editor = await openLad(page, projectId);
   await expect(editor.getByTestId('lad-1-1-e1')).toHaveAttribute('data-problem', 'error', { timeout: 10_000 });
   await expect(editor.getByTestId('network-1-1-problems')).toBeVisible();
+});
+
+test('every program of examples/lad opens in the graphical editor, draws every network and stays unchanged', async ({ page, request, watch }) => {
+  test.setTimeout(180_000);
+  const folder = path.join(__dirname, '..', '..', 'examples', 'lad');
+  const files = fs.readdirSync(folder).filter((name) => /\.(lad|fbd)$/.test(name)).sort();
+  expect(files.length).toBeGreaterThan(20);
+  const created = await request.post('/api/projects', { data: { name: `Examples ${Date.now()}` } });
+  const projectId = (await created.json()).id as number;
+  const texts = new Map<string, string>();
+  for (const name of files) {
+    const text = fs.readFileSync(path.join(folder, name), 'utf8');
+    texts.set(name, text);
+    expect((await request.put(`/api/projects/${projectId}/files/${name}`, { data: { text } })).ok(), name).toBe(true);
+  }
+  await page.goto('/');
+  await tree(page).getByTestId(`project-node-${projectId}`).click();
+  for (const name of files) {
+    await tree(page).getByTestId(`file-node-${projectId}-${name}`).dblclick();
+    const editor = page.locator('.source-view:not([hidden]) [data-testid="lad-editor"]');
+    await expect(editor, name).toBeVisible({ timeout: 15_000 });
+    await expect(page.locator('.source-view:not([hidden]) [data-testid="lad-cannot-draw"]')).toHaveCount(0);
+    const networks = (texts.get(name)!.match(/^\s*NETWORK\b/gm) ?? []).length;
+    for (let n = 1; n <= Math.min(networks, 3); n += 1) {
+      const drawn = editor.locator(`[data-testid="lad-1-${n}-rung"], [data-testid="fbd-1-${n}-diagram"], [data-testid="network-1-${n}-stl"]`);
+      await expect(drawn.first(), `${name} network ${n}`).toBeVisible({ timeout: 10_000 });
+    }
+    await page.locator('li.editor-tab', { hasText: name }).locator('[data-testid^="editor-tab-close-"]').click();
+  }
+  for (const name of files) expect(await savedText(request, projectId, name), name).toBe(texts.get(name));
+  expect(watch.consoleErrors).toEqual([]);
+});
+
+test('an STL source shown as LAD without changing it, then converted to a LAD source', async ({ page, request }) => {
+  const created = await request.post('/api/projects', { data: { name: `Convert ${Date.now()}` } });
+  const projectId = (await created.json()).id as number;
+  const stl = fs.readFileSync(path.join(__dirname, '..', '..', 'examples', 'projects', 'motor-start-stop', 'OB1.awl'), 'utf8');
+  expect((await request.put(`/api/projects/${projectId}/files/OB1.awl`, { data: { text: stl } })).ok()).toBe(true);
+  await page.goto('/');
+  await tree(page).getByTestId(`project-node-${projectId}`).click();
+  await tree(page).getByTestId(`file-node-${projectId}-OB1.awl`).dblclick();
+  await page.getByTestId('view-LAD').click();
+  const editor = page.locator('.source-view:not([hidden]) [data-testid="lad-editor"]');
+  await expect(editor.getByTestId('lad-1-1-rung')).toBeVisible({ timeout: 15_000 });
+  await expect(page.getByTestId('stl-as-diagram-note')).toContainText('1');
+  await expect(editor.getByTestId('network-1-2-stl')).toContainText('LAD3');
+  expect(await savedText(request, projectId, 'OB1.awl')).toBe(stl);
+  await page.getByTestId('convert-file').click();
+  await expect(tree(page).getByTestId(`file-node-${projectId}-OB1.lad`)).toBeVisible({ timeout: 10_000 });
+  await expect(tree(page).getByTestId(`file-node-${projectId}-OB1.awl`)).toHaveCount(0);
+  const converted = page.locator('.source-view:not([hidden]) [data-testid="lad-editor"]');
+  await expect(converted.getByTestId('lad-1-1-rung')).toBeVisible({ timeout: 15_000 });
 });

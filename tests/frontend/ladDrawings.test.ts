@@ -81,6 +81,14 @@ describe('examples/lad in the editor', () => {
     expect(geometry.nodes.length).toBe(graph.nodes.length);
     const boxes = geometry.nodes.map((node) => ({ id: node.node.id, rect: { x: node.x, y: node.y, width: node.width, height: node.height } }));
     for (const [a, b] of pairs(boxes)) expect(overlap(a.rect, b.rect), `${a.id} and ${b.id}`).toBe(false);
+    // The operands written at pins: clear of every box, and no wire runs through them.
+    const labels = geometry.nodes.flatMap((node) => [...node.ports.values()].flatMap((port) => (port.label ? [{ id: port.id, rect: port.label }] : [])));
+    for (const label of labels) for (const box of boxes) expect(overlap(label.rect, box.rect), `the operand at ${label.id} and ${box.id}`).toBe(false);
+    for (const edge of geometry.edges) {
+      edge.points.slice(1).forEach((point, k) => {
+        for (const label of labels) expect(crosses(edge.points[k]!, point, label.rect), `${edge.id} crosses the operand at ${label.id}`).toBe(false);
+      });
+    }
     for (const edge of geometry.edges) {
       const target = graph.edges.find((e) => e.id === edge.id)?.target;
       expect(edge.points.length, `${edge.id} is routed`).toBeGreaterThanOrEqual(2);

@@ -49,14 +49,14 @@ from collections.abc import Callable
 
 from nasaq.ir import Variable
 from nasaq.lang.layout import Layout, variables
-from nasaq.lang.system_blocks import SFB_INTERFACES
+from nasaq.lang.system_blocks import SFB_INTERFACES, SFB_NAMES
 from nasaq.lang.types import Field, elementary
 
 Body = Callable[[bytearray, int, int], int]
 
 TIME_MASK = 0x7FFFFFFF  # the system time (TIME_TCK) counts 0 .. 2**31 - 1 ms
 
-NAMES: dict[int, str] = {0: "CTU", 1: "CTD", 2: "CTUD", 3: "TP", 4: "TON", 5: "TOF"}
+NAMES: dict[int, str] = SFB_NAMES
 
 
 def _layout(number: int) -> tuple[list[Variable], int]:

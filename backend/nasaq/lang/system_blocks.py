@@ -1,8 +1,9 @@
-"""Interfaces of the system function blocks a program may instantiate (IEC counters and
-timers), so their instance DBs and multi-instances get the S7-300/400 layout.
+"""Interfaces of the system blocks: the system function blocks a program may instantiate (IEC
+counters and timers), so their instance DBs and multi-instances get the S7-300/400 layout, and
+the system functions the CPU runs, so a LAD/FBD call box shows their parameters.
 
-Only the interface is here (what layout and CALL checks need); what the blocks do belongs to
-the CPU. Other SFBs/SFCs are accepted in CALLs without parameter checks.
+Only the interface is here (what layout, CALL checks and the editors need); what the blocks do
+belongs to the CPU. Other SFBs/SFCs are accepted in CALLs without parameter checks.
 """
 
 from __future__ import annotations
@@ -16,6 +17,8 @@ _IEC_TIMER = [
     ("STAT", "STIME", "TIME"),
     ("STAT", "ATIME", "TIME"),
 ]
+
+SFB_NAMES: dict[int, str] = {0: "CTU", 1: "CTD", 2: "CTUD", 3: "TP", 4: "TON", 5: "TOF"}
 
 SFB_INTERFACES: dict[int, list[tuple[str, str, str]]] = {
     0: [  # CTU
@@ -49,4 +52,11 @@ SFB_INTERFACES: dict[int, list[tuple[str, str, str]]] = {
     3: _IEC_TIMER,  # TP
     4: _IEC_TIMER,  # TON
     5: _IEC_TIMER,  # TOF
+}
+
+# The system functions the CPU runs (``nasaq.cpu.calls``): their names and parameters.
+SFC_NAMES: dict[int, str] = {46: "STP", 64: "TIME_TCK"}
+SFC_INTERFACES: dict[int, list[tuple[str, str, str]]] = {
+    46: [],
+    64: [("OUT", "RET_VAL", "TIME")],
 }

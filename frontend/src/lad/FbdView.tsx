@@ -8,7 +8,7 @@ import { memo, useSyncExternalStore, type MouseEvent } from 'react';
 import { useTranslation } from 'react-i18next';
 import { flowClass, flowState, type Flow } from '../diagram/powerFlow';
 import { isPlaceholder } from './edits';
-import { fbdGeometryOf, fbdLayoutVersion, subscribeFbdLayouts, type FbdGeometry, type PlacedNode } from './fbdGeometry';
+import { LABEL_CHARS, fbdGeometryOf, fbdLayoutVersion, portText, subscribeFbdLayouts, type FbdGeometry, type PlacedNode } from './fbdGeometry';
 import type { FbdLayout, Network } from './model';
 import type { ElementState, FlowMap } from './status';
 
@@ -31,6 +31,10 @@ export interface FbdViewProps {
 function problemSeverity(problems: readonly { severity: string }[] | undefined): 'error' | 'warning' | null {
   if (!problems || problems.length === 0) return null;
   return problems.some((problem) => problem.severity === 'error') ? 'error' : 'warning';
+}
+
+function clip(text: string): string {
+  return text.length > LABEL_CHARS ? `${text.slice(0, LABEL_CHARS - 1)}…` : text;
 }
 
 function truth(value: unknown): boolean {
@@ -143,6 +147,7 @@ function Box({ placed, props, signals, signalOf }: { placed: PlacedNode; props: 
         const pinValue = state?.pins[port.name];
         const stub = west ? at.x - 12 : at.x + 12;
         const selectPort = port.element && port.element !== node.id ? port.element : null;
+        const text = portText(port);
         return (
           <g
             key={port.id}
@@ -179,38 +184,26 @@ function Box({ placed, props, signals, signalOf }: { placed: PlacedNode; props: 
                 {port.name}
               </text>
             ) : null}
-            {port.label !== null && port.label !== undefined ? (
+            {text !== null && at.label ? (
               <text
-                x={west ? stub - 3 : stub + 3}
-                y={at.y - 4}
+                x={at.label.x + (west ? at.label.width - 4 : 4)}
+                y={at.label.y + 11}
                 textAnchor={west ? 'end' : 'start'}
-                className={`fbd-operand${isPlaceholder(port.label) ? ' lad-operand--missing' : ''}`}
+                className={`fbd-operand${isPlaceholder(text) ? ' lad-operand--missing' : ''}${port.open ? ' fbd-operand--open' : ''}`}
+                data-testid={port.open || node.kind === 'box' ? `${props.prefix}-${node.id}-pin-${port.name}` : undefined}
                 onDoubleClick={(event) => {
                   if (node.kind !== 'box' || selectPort) return;
                   event.stopPropagation();
                   props.onEdit(node.id, `pin:${port.name}`);
                 }}
               >
-                {label(port.label)}
-              </text>
-            ) : port.open ? (
-              <text
-                x={west ? stub - 3 : stub + 3}
-                y={at.y - 4}
-                textAnchor={west ? 'end' : 'start'}
-                className="fbd-operand fbd-operand--open"
-                data-testid={`${props.prefix}-${node.id}-pin-${port.name}`}
-                onDoubleClick={(event) => {
-                  event.stopPropagation();
-                  props.onEdit(node.id, `pin:${port.name}`);
-                }}
-              >
-                ...
+                <title>{text}</title>
+                {clip(port.open ? text : label(text))}
               </text>
             ) : null}
-            {pinValue !== undefined && pinValue !== null ? (
-              <text x={west ? stub - 3 : stub + 3} y={at.y + 12} textAnchor={west ? 'end' : 'start'} className="lad-value">
-                {String(pinValue === true ? 1 : pinValue === false ? 0 : pinValue)}
+            {typeof pinValue === 'number' || typeof pinValue === 'string' ? (
+              <text x={west ? at.x - 4 : at.x + 4} y={at.y - 4} textAnchor={west ? 'end' : 'start'} className="lad-value">
+                {String(pinValue)}
               </text>
             ) : null}
           </g>

@@ -9,6 +9,7 @@
  * the field being typed, collapsed networks, the display of operands.
  */
 import { useCallback, useEffect, useMemo, useRef, useState, useSyncExternalStore, type DragEvent, type KeyboardEvent, type MouseEvent, type ReactNode } from 'react';
+import { createPortal } from 'react-dom';
 import { useTranslation } from 'react-i18next';
 import type { Problem } from '../api/monitorClient';
 import type { Diagnostic } from '../api/types';
@@ -22,10 +23,12 @@ import { breakpoints, breakpointKey } from '../editor/monitoring/breakpointStore
 import { RowMenu, type MenuAction } from '../projects/RowMenu';
 import { useProjectContents } from '../projects/projectContents';
 import { readStored, writeStored } from '../ui/usePersistentState';
+import { useUiLanguage } from '../i18n/useDocumentLanguage';
 import { CATALOGUE_MIME, CataloguePanel, Favourites, type Command } from './Catalogue';
 import { copyNetworks, pasteNetworks } from './clipboard';
 import { isPlaceholder } from './edits';
-import { CATALOGUE_ITEMS, callItems, catalogueItem, emptyBox, type CatalogueItem } from './elements';
+import { callInterface, callItems, connectPin } from './calls';
+import { CATALOGUE_ITEMS, catalogueItem, emptyBox, type CatalogueItem } from './elements';
 import { STATUS_BITS, fieldText, withField } from './fields';
 import { rungSize } from './geometry';
 import { fbdBodyHeight, fbdLayoutVersion, subscribeFbdLayouts } from './fbdGeometry';
@@ -36,6 +39,7 @@ import { LadRung, type RungProblem } from './LadRung';
 import { layoutOf } from './layoutCache';
 import type { LadBlock, Network } from './model';
 import { HEADER_H, COMMENT_LINE_H, NETWORK_PAD, NetworkView, commentLines, stlBodyHeight, type NetworkBreakpoint } from './NetworkView';
+import { ModifyDialog } from './ModifyDialog';
 import { OperandEditor, type Complete } from './OperandEditor';
 import { listCompleter, operandCompleter, operandLabel, outlineBlock, symbolIndex, type OperandDisplay } from './operands';
 import { networkFlows } from './status';
@@ -94,6 +98,7 @@ function prefixOf(block: number, network: number): string {
 
 export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, monitoring, onMonitorProblem }: LadEditorProps) {
   const { t, i18n } = useTranslation();
+  const { dir, language } = useUiLanguage();
   const blocks: readonly LadBlock[] = doc.blocks ?? [];
   const editable = !readOnly && doc.state.status === 'ready' && !doc.pending;
   const list = useRef<NetworkListHandle>(null);
@@ -109,6 +114,8 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
   const [visible, setVisible] = useState<{ first: number; last: number }>({ first: 0, last: 0 });
   const [breakpointDialog, setBreakpointDialog] = useState<{ block: string; network: number } | null>(null);
   const [notice, setNotice] = useState<string | null>(null);
+  /** The operand whose value the Modify dialog asks for. */
+  const [modifying, setModifying] = useState<string | null>(null);
   const wantFocus = useRef(false);
   const message = useDiagnosticMessage();
   const { command } = useSession();
@@ -130,7 +137,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
   );
   const symbols = useMemo(() => symbolIndex(outline), [outline]);
   const contents = useProjectContents(projectId);
-  const items = useMemo(() => [...CATALOGUE_ITEMS, ...callItems(outline?.blocks ?? [])], [outline]);
+  const items = useMemo(() => [...CATALOGUE_ITEMS, ...callItems(outline)], [outline]);
   const favourites = useMemo(
     () => ['contact', 'contactNC', 'coil:='].map((key) => catalogueItem(key)).filter((item): item is CatalogueItem => !!item),
     [],
@@ -445,7 +452,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
       const network = blocks[edit.block]?.networks[edit.network];
       const element = network ? findById(network, edit.id) : null;
       if (!element) return;
-      const result = withField(element, edit.field, text);
+      const result = withField(element, edit.field, text, (name) => callInterface(name, outline));
       if ('error' in result) {
         setNotice(t(`lad.notice.${result.error}`, { text }));
         return;
@@ -456,7 +463,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
         setEditing({ ...edit, field: 'instance' });
       }
     },
-    [apply, blocks, t],
+    [apply, blocks, t, outline],
   );
 
   const completerFor = useCallback(
@@ -497,16 +504,26 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
         actions.push({ id: 'force0', label: t('lad.menu.force0'), onSelect: () => void command({ type: 'force', address: operand, value: false }) });
         actions.push({ id: 'unforce', label: t('lad.menu.unforce'), onSelect: () => void command({ type: 'unforce', address: operand }) });
       }
+      if (editable && element.kind === 'box') {
+        for (const pin of callInterface(element.name, outline) ?? []) {
+          if (pin.name in element.inputs || pin.name in element.outputs) continue;
+          actions.push({
+            id: `connect-${pin.name}`,
+            label: t('lad.menu.connect', { pin: pin.name, type: pin.type }),
+            onSelect: () => {
+              apply((all, s) => commands.replaceSelected(all, s, id, connectPin(element, pin)), t('lad.menu.connect', { pin: pin.name, type: pin.type }));
+              setEditing({ block: b, network: n, id, field: `pin:${pin.name}` });
+            },
+          });
+        }
+      }
       if (monitor.online && element.kind === 'box') {
         for (const [pin, value] of Object.entries(element.inputs)) {
           if (typeof value !== 'string' || isPlaceholder(value) || /^[-+]?\d|#/.test(value)) continue;
           actions.push({
             id: `modify-${pin}`,
             label: t('lad.menu.modifyPin', { pin, operand: value }),
-            onSelect: () => {
-              const typed = window.prompt(t('lad.menu.modifyPrompt', { operand: value }));
-              if (typed !== null && typed.trim() !== '') void command({ type: 'modify', target: value, value: typed.trim() });
-            },
+            onSelect: () => setModifying(value),
           });
         }
       }
@@ -515,7 +532,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
       const anchor = document.getElementById(`lad-${prefixOf(b, n)}-${id}`) ?? (event.target as Element);
       setMenu({ anchor, label: t('lad.menu.element'), actions });
     },
-    [blocks, editable, t, editSelected, apply, monitor.online, command, symbols],
+    [blocks, editable, t, editSelected, apply, monitor.online, command, symbols, outline],
   );
 
   const onHeaderMenu = useCallback(
@@ -571,7 +588,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
     if (!block) return null;
     if (row.kind === 'block') {
       return (
-        <header className="lad-block" data-testid={`lad-block-${row.block + 1}`}>
+        <header className="lad-block" data-testid={`lad-block-${row.block + 1}`} dir={dir} lang={language}>
           <span className="lad-block__name" dir="ltr">
             {block.name}
           </span>
@@ -591,7 +608,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
     }
     if (row.kind === 'end') {
       return (
-        <div className="lad-end">
+        <div className="lad-end" dir={dir} lang={language}>
           {editable ? (
             <button
               type="button"
@@ -746,7 +763,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
         if (editable && event.dataTransfer.types.includes(CATALOGUE_MIME) && !dragging) setDragging(true);
       }}
     >
-      <div className="lad-toolbar" role="toolbar" aria-label={t('lad.toolbar.label')}>
+      <div className="lad-toolbar" role="toolbar" aria-label={t('lad.toolbar.label')} dir={dir} lang={language}>
         <button type="button" className="lad-tool" disabled={!editable || !doc.canUndo} onClick={doc.undo} data-testid="lad-undo" aria-keyshortcuts="Control+Z" title={`${t('lad.toolbar.undo')} (Ctrl+Z)`}>
           {t('lad.toolbar.undo')}
         </button>
@@ -791,8 +808,8 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
           </span>
         ) : null}
       </div>
-      <div className="lad-editor__main">
-        <div className="lad-editor__list" onKeyDown={onKeyDown} tabIndex={-1}>
+      <div className="lad-editor__main" dir={dir} lang={language}>
+        <div className="lad-editor__list" onKeyDown={onKeyDown} tabIndex={-1} dir="ltr">
           <NetworkList
             ref={list}
             count={rows.length}
@@ -834,9 +851,16 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
           }}
         />
       ) : null}
-      {breakpointDialog && projectId !== null && file ? (
-        <BreakpointDialog projectId={projectId} file={file} line={breakpointDialog.network} block={breakpointDialog.block} onClose={() => setBreakpointDialog(null)} />
-      ) : null}
+      {/* In the page's body: the editor's frame is always left to right, the dialogs are not. */}
+      {modifying !== null
+        ? createPortal(<ModifyDialog operand={modifying} onModify={(value) => void command({ type: 'modify', target: modifying, value })} onClose={() => setModifying(null)} />, document.body)
+        : null}
+      {breakpointDialog && projectId !== null && file
+        ? createPortal(
+            <BreakpointDialog projectId={projectId} file={file} line={breakpointDialog.network} block={breakpointDialog.block} onClose={() => setBreakpointDialog(null)} />,
+            document.body,
+          )
+        : null}
     </div>
   );
 }

@@ -73,8 +73,9 @@ function clip(text: string, max = TEXT_MAX): string {
   return text.length > max ? `${text.slice(0, max - 1)}…` : text;
 }
 
+/** A value written beside an element or pin: numbers and texts; a bit's value is its colour. */
 function valueText(props: Props, value: unknown): string | null {
-  if (value === undefined || value === null || !props.formatValue) return null;
+  if (value === undefined || value === null || typeof value === 'boolean' || !props.formatValue) return null;
   return props.formatValue(value);
 }
 
@@ -272,7 +273,7 @@ function BoxShape({ cell, element, props }: { cell: LadCell; element: Extract<El
       >
         {clip(title, 11)}
       </text>
-      {valueText(props, state?.value) !== null ? (
+      {valueText(props, state?.value) !== null && !cell.pins.some((pin) => valueText(props, state?.pins[pin.name]) !== null) ? (
         <text x={(left + right) / 2} y={bottom - 4} textAnchor="middle" className="lad-value" data-testid={`value-${props.prefix}-${element.id}`}>
           {valueText(props, state?.value)}
         </text>

@@ -6,6 +6,7 @@
  */
 import { memo, useEffect, useRef, useState, type KeyboardEvent, type ReactNode } from 'react';
 import { useTranslation } from 'react-i18next';
+import { useUiLanguage } from '../i18n/useDocumentLanguage';
 import { ChevronIcon } from '../ui/icons';
 import type { Network } from './model';
 
@@ -99,6 +100,7 @@ function HeaderField({ value, multiline, label, onCommit, onCancel, testId, code
 
 export const NetworkView = memo(function NetworkView(props: NetworkViewProps) {
   const { t } = useTranslation();
+  const { dir, language } = useUiLanguage();
   const { network, number, prefix } = props;
   const errors = props.problems.length + props.elementProblems;
   return (
@@ -108,7 +110,7 @@ export const NetworkView = memo(function NetworkView(props: NetworkViewProps) {
       data-held={props.held ? 'true' : undefined}
       aria-label={t('lad.network.label', { number, title: network.title })}
     >
-      <div className="network__header">
+      <div className="network__header" dir={dir} lang={language}>
         <button
           type="button"
           className="network__toggle"
@@ -175,7 +177,7 @@ export const NetworkView = memo(function NetworkView(props: NetworkViewProps) {
             </p>
           ) : null}
           {props.problems.length > 0 ? (
-            <ul className="network__messages">
+            <ul className="network__messages" dir={dir} lang={language}>
               {props.problems.map((problem, k) => (
                 <li key={k} className={`network__message network__message--${problem.severity}`}>
                   <code className="error-code">{problem.code}</code> {problem.message}
@@ -186,7 +188,7 @@ export const NetworkView = memo(function NetworkView(props: NetworkViewProps) {
           {network.stl !== null ? (
             <div className="network__stl-kept" data-testid={`network-${prefix}-stl`}>
               {props.reasonText ? (
-                <p className="network__reason">
+                <p className="network__reason" dir={dir} lang={language}>
                   {network.stl_reason ? <code className="error-code">{network.stl_reason}</code> : null} {props.reasonText}
                 </p>
               ) : null}

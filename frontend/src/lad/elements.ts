@@ -61,11 +61,6 @@ export function newBox(spec: BoxSpec): Element {
   return { kind: 'box', id: '', name: spec.name, instance, inputs, outputs };
 }
 
-/** A call of a block (`FC 10`, `FB 5`, `"Motor"`): FBs and SFBs need their instance DB. */
-export function newCall(name: string, needsInstance: boolean): Element {
-  return { kind: 'box', id: '', name, instance: needsInstance ? PLACEHOLDER : null, inputs: {}, outputs: {} };
-}
-
 function coil(kind: string, value = false): Final {
   return { kind: 'coil', id: '', coil: kind as Extract<Final, { kind: 'coil' }>['coil'], operand: kind === 'SAVE' ? '' : PLACEHOLDER_FOR(kind), value: value ? PLACEHOLDER : null };
 }
@@ -128,23 +123,6 @@ export const CATALOGUE_ITEMS: readonly CatalogueItem[] = [...FIXED, ...BOXES];
 
 export function catalogueItem(key: string): CatalogueItem | undefined {
   return CATALOGUE_ITEMS.find((entry) => entry.key === key);
-}
-
-/** The call entries of the project's FCs and FBs. */
-export function callItems(blocks: readonly { kind: string; number: number; name: string }[]): CatalogueItem[] {
-  return blocks
-    .filter((block) => block.kind === 'FC' || block.kind === 'FB')
-    .map((block) => {
-      const name = `${block.kind} ${block.number}`;
-      return {
-        key: `call:${name}`,
-        group: 'calls' as const,
-        symbol: block.name && block.name !== name ? `${name} "${block.name}"` : name,
-        nameKey: null,
-        final: false,
-        make: () => newCall(name, block.kind === 'FB'),
-      };
-    });
 }
 
 /** Entries whose symbol or translated name contains the search text (case and spacing ignored). */

@@ -13,7 +13,7 @@ import type { FbdLayout, FbdLayoutNode, Network } from './model';
 
 /** The title row of a box, and the height of each pin row below it. */
 export const TITLE_H = 24;
-export const PIN_H = 22;
+export const PIN_H = 30;
 const LOGIC_W = 52;
 const BOX_W = 92;
 
@@ -21,6 +21,8 @@ export interface PlacedPort {
   id: string;
   x: number;
   y: number;
+  /** Where elkjs put the operand written at the pin (room kept free of boxes and wires). */
+  label: { x: number; y: number; width: number; height: number } | null;
 }
 
 export interface PlacedNode {
@@ -60,6 +62,20 @@ function portY(index: number): number {
   return TITLE_H + index * PIN_H + PIN_H / 2;
 }
 
+/** About how wide a pin's operand is written (monospace, 11.5 px): elkjs keeps wires off it. */
+export function labelWidth(text: string): number {
+  return Math.min(text.length, LABEL_CHARS) * 7 + 8;
+}
+
+/** Operands longer than this are cut (with an ellipsis) where they are written at a pin. */
+export const LABEL_CHARS = 14;
+
+/** What a pin shows beside it: its operand, or `...` when nothing is connected. */
+export function portText(port: FbdLayoutNode['ports'][number]): string | null {
+  if (port.label !== null && port.label !== undefined) return port.label;
+  return port.open ? '...' : null;
+}
+
 /** The elkjs graph of an FBD layout: fixed port positions, the model's order kept. */
 export function elkGraph(graph: FbdLayout): ElkNode {
   const nodes = [...graph.nodes].sort((a, b) => a.layer - b.layer || a.order - b.order);
@@ -70,14 +86,18 @@ export function elkGraph(graph: FbdLayout): ElkNode {
       width,
       height: nodeHeight(node),
       layoutOptions: { ...NODE_OPTIONS, 'elk.margins': `[top=${node.operand ? 18 : 4},left=0,bottom=4,right=0]` },
-      ports: node.ports.map((port) => ({
-        id: port.id,
-        width: 0,
-        height: 0,
-        x: port.side === 'WEST' ? 0 : width,
-        y: portY(port.index),
-        layoutOptions: { 'elk.port.side': port.side },
-      })),
+      ports: node.ports.map((port) => {
+        const text = portText(port);
+        return {
+          id: port.id,
+          width: 0,
+          height: 0,
+          x: port.side === 'WEST' ? 0 : width,
+          y: portY(port.index),
+          layoutOptions: { 'elk.port.side': port.side },
+          ...(text ? { labels: [{ id: `${port.id}.label`, text, width: labelWidth(text), height: 14 }] } : {}),
+        };
+      }),
     };
   });
   const edges: ElkExtendedEdge[] = graph.edges.map((edge) => ({ id: edge.id, sources: [edge.source_port], targets: [edge.target_port] }));
@@ -94,7 +114,13 @@ export function placed(graph: FbdLayout, laid: ElkNode): FbdGeometry {
     const x = child.x ?? 0;
     const y = child.y ?? 0;
     const ports = new Map<string, PlacedPort>();
-    for (const port of child.ports ?? []) ports.set(port.id, { id: port.id, x: x + (port.x ?? 0), y: y + (port.y ?? 0) });
+    for (const port of child.ports ?? []) {
+      const px = x + (port.x ?? 0);
+      const py = y + (port.y ?? 0);
+      const text = port.labels?.[0];
+      const label = text ? { x: px + (text.x ?? 0), y: py + (text.y ?? 0), width: text.width ?? 0, height: text.height ?? 0 } : null;
+      ports.set(port.id, { id: port.id, x: px, y: py, label });
+    }
     nodes.push({ node, x, y, width: child.width ?? nodeWidth(node), height: child.height ?? nodeHeight(node), ports });
   }
   const edges: PlacedEdge[] = (laid.edges ?? []).map((edge) => {

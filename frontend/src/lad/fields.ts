@@ -5,7 +5,8 @@
  */
 import { boxSpec, callTarget } from './boxes';
 import { BIT_PLACEHOLDER, PLACEHOLDER, isPlaceholder } from './edits';
-import { newBox, newCall } from './elements';
+import { newCallBox, type CallPin } from './calls';
+import { newBox } from './elements';
 import type { Element, Final } from './tree';
 
 export const STATUS_BITS = ['OV', 'OS', 'BR', 'UO', '==0', '<>0', '>0', '<0', '>=0', '<=0'] as const;
@@ -50,8 +51,11 @@ function bitField(element: Element | Final, field: string): boolean {
   return false;
 }
 
-/** The element with `text` typed into `field`; an empty operand is the placeholder again. */
-export function withField(element: Element | Final, field: string, text: string): FieldResult {
+/**
+ * The element with `text` typed into `field`; an empty operand is the placeholder again.
+ * `interfaceOf` gives a called block's parameters (a box typed as a call gets them).
+ */
+export function withField(element: Element | Final, field: string, text: string, interfaceOf: (name: string) => CallPin[] | null = () => null): FieldResult {
   const value = text.trim();
   const operand = value || (bitField(element, field) ? BIT_PLACEHOLDER : PLACEHOLDER);
   if (field.startsWith('pin:') && element.kind === 'box') return { element: withPin(element, field.slice(4), value) };
@@ -74,7 +78,7 @@ export function withField(element: Element | Final, field: string, text: string)
     case 'instance':
       return element.kind === 'box' ? { element: { ...element, instance: operand } } : { element };
     case 'name':
-      return element.kind === 'box' ? renamedBox(element, value) : { element };
+      return element.kind === 'box' ? renamedBox(element, value, interfaceOf) : { element };
     default:
       return { element };
   }
@@ -102,14 +106,15 @@ function withPin(box: BoxElement, pin: string, value: string): BoxElement {
  * The box turned into another type (the empty box of Shift+F5 gets its type, a MOVE becomes an
  * ADD_I): pins of the same name keep their operands, an instance of the same kind is kept.
  */
-function renamedBox(box: BoxElement, name: string): FieldResult {
+function renamedBox(box: BoxElement, name: string, interfaceOf: (name: string) => CallPin[] | null): FieldResult {
   const spec = boxSpec(name);
   let fresh: Element;
   if (spec) fresh = newBox(spec);
   else {
     const call = callTarget(name);
     if (!call) return { error: 'box' };
-    fresh = newCall(call[0], call[1]);
+    const kind = /^(SFC|SFB|FC|FB)/i.exec(call[0])?.[1]?.toUpperCase() ?? (call[1] ? 'FB' : 'FC');
+    fresh = newCallBox(call[0], kind, interfaceOf(call[0]) ?? []);
   }
   if (fresh.kind !== 'box') return { error: 'box' };
   const oldSpec = boxSpec(box.name);

@@ -458,3 +458,29 @@ export interface FbdPort {
   element: string | null;
   open: boolean;
 }
+
+/** A parameter of a system block (`backend/nasaq/lang/system_blocks.py`). */
+export interface SystemPin {
+  section: 'IN' | 'OUT' | 'IN_OUT';
+  name: string;
+  type: string;
+}
+
+/** A system function (block) the CPU runs, as a LAD/FBD call box calls it. */
+export interface SystemBlock {
+  kind: 'SFB' | 'SFC';
+  number: number;
+  name: string;
+  pins: SystemPin[];
+}
+
+export const SYSTEM_BLOCKS: readonly SystemBlock[] = [
+  { kind: 'SFB', number: 0, name: 'CTU', pins: [{ section: 'IN', name: 'CU', type: 'BOOL' }, { section: 'IN', name: 'R', type: 'BOOL' }, { section: 'IN', name: 'PV', type: 'INT' }, { section: 'OUT', name: 'Q', type: 'BOOL' }, { section: 'OUT', name: 'CV', type: 'INT' }] },
+  { kind: 'SFB', number: 1, name: 'CTD', pins: [{ section: 'IN', name: 'CD', type: 'BOOL' }, { section: 'IN', name: 'LOAD', type: 'BOOL' }, { section: 'IN', name: 'PV', type: 'INT' }, { section: 'OUT', name: 'Q', type: 'BOOL' }, { section: 'OUT', name: 'CV', type: 'INT' }] },
+  { kind: 'SFB', number: 2, name: 'CTUD', pins: [{ section: 'IN', name: 'CU', type: 'BOOL' }, { section: 'IN', name: 'CD', type: 'BOOL' }, { section: 'IN', name: 'R', type: 'BOOL' }, { section: 'IN', name: 'LOAD', type: 'BOOL' }, { section: 'IN', name: 'PV', type: 'INT' }, { section: 'OUT', name: 'QU', type: 'BOOL' }, { section: 'OUT', name: 'QD', type: 'BOOL' }, { section: 'OUT', name: 'CV', type: 'INT' }] },
+  { kind: 'SFB', number: 3, name: 'TP', pins: [{ section: 'IN', name: 'IN', type: 'BOOL' }, { section: 'IN', name: 'PT', type: 'TIME' }, { section: 'OUT', name: 'Q', type: 'BOOL' }, { section: 'OUT', name: 'ET', type: 'TIME' }] },
+  { kind: 'SFB', number: 4, name: 'TON', pins: [{ section: 'IN', name: 'IN', type: 'BOOL' }, { section: 'IN', name: 'PT', type: 'TIME' }, { section: 'OUT', name: 'Q', type: 'BOOL' }, { section: 'OUT', name: 'ET', type: 'TIME' }] },
+  { kind: 'SFB', number: 5, name: 'TOF', pins: [{ section: 'IN', name: 'IN', type: 'BOOL' }, { section: 'IN', name: 'PT', type: 'TIME' }, { section: 'OUT', name: 'Q', type: 'BOOL' }, { section: 'OUT', name: 'ET', type: 'TIME' }] },
+  { kind: 'SFC', number: 46, name: 'STP', pins: [] },
+  { kind: 'SFC', number: 64, name: 'TIME_TCK', pins: [{ section: 'OUT', name: 'RET_VAL', type: 'TIME' }] },
+];

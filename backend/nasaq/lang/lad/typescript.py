@@ -18,6 +18,7 @@ from pydantic import TypeAdapter
 from nasaq.lang.lad.fbd import FbdFinal, FbdNetwork, FbdNode
 from nasaq.lang.lad.layout import FbdLayout, LadLayout
 from nasaq.lang.lad.model import Element, Final, LadBlock
+from nasaq.lang.system_blocks import SFB_INTERFACES, SFB_NAMES, SFC_INTERFACES, SFC_NAMES
 from nasaq.typescript import Root, generate, write_or_print
 
 COMMAND = ".venv/bin/python -m nasaq.lang.lad.typescript --write"
@@ -28,8 +29,42 @@ def _root(name: str, kind: Any, description: str = "") -> Root:
     return Root(name, TypeAdapter(kind), "serialization", description)
 
 
+def _system_blocks() -> str:
+    """The system blocks a call box can call, with their parameters (``lang/system_blocks``)."""
+    rows = []
+    for kind, names, interfaces in (
+        ("SFB", SFB_NAMES, SFB_INTERFACES),
+        ("SFC", SFC_NAMES, SFC_INTERFACES),
+    ):
+        for number, name in names.items():
+            pins = ", ".join(
+                f"{{ section: '{section}', name: '{pin}', type: '{type_}' }}"
+                for section, pin, type_ in interfaces[number]
+                if section in ("IN", "OUT", "IN_OUT")
+            )
+            head = f"kind: '{kind}', number: {number}, name: '{name}'"
+            rows.append(f"  {{ {head}, pins: [{pins}] }},")
+    return (
+        "\n/** A parameter of a system block (`backend/nasaq/lang/system_blocks.py`). */\n"
+        "export interface SystemPin {\n"
+        "  section: 'IN' | 'OUT' | 'IN_OUT';\n"
+        "  name: string;\n"
+        "  type: string;\n"
+        "}\n\n"
+        "/** A system function (block) the CPU runs, as a LAD/FBD call box calls it. */\n"
+        "export interface SystemBlock {\n"
+        "  kind: 'SFB' | 'SFC';\n"
+        "  number: number;\n"
+        "  name: string;\n"
+        "  pins: SystemPin[];\n"
+        "}\n\n"
+        "export const SYSTEM_BLOCKS: readonly SystemBlock[] = [\n" + "\n".join(rows) + "\n];\n"
+    )
+
+
 def model_typescript() -> str:
-    """The contents of ``frontend/src/lad/model.ts``."""
+    """The contents of ``frontend/src/lad/model.ts``: the model's types, and the system blocks
+    a call box can call."""
     return (
         "// Generated from backend/nasaq/lang/lad/ (model.py, fbd.py, layout.py, layout_fbd.py);\n"
         f"// do not edit. Regenerate with `{COMMAND}`.\n\n"
@@ -45,6 +80,7 @@ def model_typescript() -> str:
                 _root("FbdLayout", FbdLayout),
             ]
         )
+        + _system_blocks()
     )
 
 
