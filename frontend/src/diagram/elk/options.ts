@@ -16,13 +16,15 @@ export const LAYERED_OPTIONS: LayoutOptions = {
   'elk.layered.nodePlacement.bk.fixedAlignment': 'BALANCED',
   'elk.layered.layering.strategy': 'LONGEST_PATH',
   'elk.spacing.nodeNode': '22',
-  'elk.layered.spacing.nodeNodeBetweenLayers': '100',
+  'elk.layered.spacing.nodeNodeBetweenLayers': '40',
   'elk.layered.spacing.edgeNodeBetweenLayers': '14',
   'elk.spacing.edgeEdge': '10',
-  'elk.padding': '[top=16,left=110,bottom=12,right=120]',
+  'elk.padding': '[top=16,left=12,bottom=12,right=12]',
 };
 
 /** Ports stay where the node lists them (inputs top to bottom on the left, outputs on the right). */
 export const NODE_OPTIONS: LayoutOptions = {
   'elk.portConstraints': 'FIXED_POS',
+  // Operands written at pins stand outside the box; the layout keeps room for them.
+  'elk.portLabels.placement': 'OUTSIDE',
 };
