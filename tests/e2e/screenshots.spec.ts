@@ -111,3 +111,93 @@ for (const language of ['en', 'fa'] as const) {
     expect(watch.foreignRequests).toEqual([]);
   });
 }
+
+/** A conveyor in LAD with symbols: a latch, an on-delay timer, a counter, a compare and a MOVE. */
+const CONVEYOR = `ORGANIZATION_BLOCK OB 1
+TITLE = Conveyor
+BEGIN
+NETWORK
+TITLE = Start/stop with a delayed second motor
+COMMENT = The second motor follows the first after 2 s.
+RUNG
+  PARALLEL
+    BRANCH Contact("Start") END_BRANCH
+    BRANCH Contact("Motor") END_BRANCH
+  END_PARALLEL
+  ContactNC("Stop")
+  OUTPUTS
+    BRANCH Coil("Motor") END_BRANCH
+    BRANCH Box(S_ODT, INSTANCE T 1, TV := S5T#2S, BI => MW 10) Coil("Motor2") END_BRANCH
+  END_OUTPUTS
+END_RUNG
+NETWORK
+TITLE = Parts counted on the conveyor
+RUNG
+  Contact("Part")
+  Box(S_CU, INSTANCE C 1, S := "Reset", PV := C#5, CV => MW 20)
+  Coil("Full")
+END_RUNG
+NETWORK
+TITLE = Speed set point once three parts passed
+RUNG
+  Box(CMP>=I, IN1 := MW 20, IN2 := 3)
+  Box(MOVE, IN := 100, OUT => MW 30)
+END_RUNG
+END_ORGANIZATION_BLOCK
+`;
+const CONVEYOR_SYMBOLS = [
+  ['Start', 'I      0.0', 'Start button'],
+  ['Stop', 'I      0.1', 'Stop button (normally closed)'],
+  ['Part', 'I      0.2', 'Part sensor'],
+  ['Reset', 'I      0.3', 'Counter reset'],
+  ['Motor', 'Q      4.0', 'Conveyor motor'],
+  ['Motor2', 'Q      4.1', 'Second motor'],
+  ['Full', 'Q      4.2', 'Five parts counted'],
+]
+  .map(([name, address, comment]) => `"${name}","${address}","BOOL","${comment}"`)
+  .join('\r\n');
+
+for (const language of ['en', 'fa'] as const) {
+  test(`screenshots of the LAD and FBD editor online in ${language === 'en' ? 'English' : 'Persian'}`, async ({ page, request, watch }) => {
+    test.setTimeout(90_000);
+    const created = await request.post('/api/projects', { data: { name: `Conveyor ${language}` } });
+    const projectId = (await created.json()).id as number;
+    for (const [name, text] of [['Conveyor.lad', CONVEYOR], ['symbols.sdf', `${CONVEYOR_SYMBOLS}\r\n`]] as const) {
+      expect((await request.put(`/api/projects/${projectId}/files/${name}`, { data: { text } })).ok()).toBe(true);
+    }
+    await page.setViewportSize({ width: 1440, height: 900 });
+    await page.goto('/');
+    await expect(page.getByTestId('server-status')).toHaveAttribute('data-state', 'online');
+    if (language !== 'en') await chooseLanguage(page, language);
+    await page.evaluate(() => document.fonts.ready);
+    if ((await page.getByTestId('lesson-toggle').getAttribute('aria-pressed')) === 'true') await page.getByTestId('lesson-toggle').click();
+    await page.getByTestId(`project-node-${projectId}`).click();
+    await page.getByTestId(`file-node-${projectId}-Conveyor.lad`).dblclick();
+    const editor = page.locator('.source-view:not([hidden]) [data-testid="lad-editor"]');
+    await expect(editor.getByTestId('lad-1-1-e2')).toBeVisible({ timeout: 15_000 });
+    await page.keyboard.press('Control+B');
+    await expect(page.getByTestId('cpu-state')).toHaveAttribute('data-mode', 'stop', { timeout: 15_000 });
+    await page.getByTestId('cpu-run').click();
+    await page.locator('.source-view:not([hidden]) [data-testid="monitor-toggle"]').click();
+    await page.getByTestId('panel-tab-io').click();
+    // The motor started and held, two parts counted.
+    await page.getByTestId('io-I0.0').click();
+    await expect(editor.getByTestId('lad-1-1-e5')).toHaveAttribute('data-flow-in', 'on');
+    await page.getByTestId('io-I0.0').click();
+    for (let part = 0; part < 2; part += 1) {
+      await page.getByTestId('io-I0.2').click();
+      await expect(editor.getByTestId('lad-1-2-e1')).toHaveAttribute('data-contact', 'on');
+      await page.getByTestId('io-I0.2').click();
+      await expect(editor.getByTestId('lad-1-2-e1')).toHaveAttribute('data-contact', 'off');
+    }
+    await editor.getByTestId('lad-1-1-e2').click();
+    await page.mouse.move(0, 0);
+    await shoot(page, language, 'lad-online');
+    await page.getByTestId('view-FBD').click();
+    await expect(editor.getByTestId('fbd-1-2-diagram')).toBeVisible({ timeout: 10_000 });
+    await page.mouse.move(0, 0);
+    await shoot(page, language, 'fbd-online');
+    await page.getByTestId('view-LAD').click();
+    expect(watch.consoleErrors).toEqual([]);
+  });
+}
