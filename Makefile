@@ -19,7 +19,9 @@ help:
 	@echo "make bench        STL instructions/s of the CPU; SCL compile lines/s and statements/s;"
 	@echo "                  monitoring latency, 100 sessions, block status slowdown;"
 	@echo "                  the editor's longest main-thread task with a 500-network STL block"
-	@echo "                  and a 5,000-line SCL source, scrolled and monitored (Chromium)"
+	@echo "                  and a 5,000-line SCL source, scrolled and monitored (Chromium);"
+	@echo "                  a 500-network LAD block opened, scrolled and monitored, and the"
+	@echo "                  elkjs layout of a 40-box FBD network in its worker"
 	@echo "make conformance  awlsim's self-checking STL programs (downloads awlsim from PyPI)"
 	@echo "make install | make lock (re-pin Python dependencies) | make clean"
 

@@ -72,7 +72,9 @@ export function useSourceFile(tab: SourceTab, store: ProjectContentsStore = proj
         if (target) store.applyBuild(target.projectId, build, target.path);
       },
     });
-    check.change(initial.text, true);
+    // A text opened with changes is checked at once; a saved one after the usual pause: the
+    // project's build has its diagnostics already, and a diagram being read goes first.
+    check.change(initial.text, initial.dirty);
     saverRef.current = saver;
     checkRef.current = check;
     const unregister = registerAutosaver(id, currentFile, saver);

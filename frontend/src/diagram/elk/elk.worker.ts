@@ -5,6 +5,7 @@
  * and initialises much of its code), so a user's first network does not pay for that.
  */
 import type { ElkNode } from 'elkjs/lib/elk-api';
+import { LAYERED_OPTIONS, NODE_OPTIONS } from './options';
 import { newElk } from './runLayout';
 
 interface Request {
@@ -14,16 +15,38 @@ interface Request {
 
 // Made before the handler is set: making it installs elkjs's own handler (see `newElk`).
 const elk = newElk();
-const WARM_UP: ElkNode = {
-  id: 'warm-up',
-  layoutOptions: { 'elk.algorithm': 'layered' },
-  children: [
-    { id: 'a', width: 10, height: 10 },
-    { id: 'b', width: 10, height: 10 },
-  ],
-  edges: [{ id: 'a-b', sources: ['a'], targets: ['b'] }],
-};
-let queue: Promise<unknown> = elk.layout(WARM_UP).catch(() => undefined);
+/**
+ * A small graph of the shape the editors send (boxes in layers, fixed ports, port labels,
+ * orthogonal wires), laid out a few times so that elkjs's code for it is compiled before the
+ * first real network arrives.
+ */
+function warmUp(): ElkNode {
+  const children: ElkNode[] = [];
+  const edges: ElkNode['edges'] = [];
+  for (let k = 0; k < 12; k += 1) {
+    children.push({
+      id: `n${k}`,
+      width: 60,
+      height: 84,
+      layoutOptions: NODE_OPTIONS,
+      ports: [0, 1].map((index) => ({
+        id: `n${k}.W.${index}`,
+        x: 0,
+        y: 39 + index * 30,
+        width: 0,
+        height: 0,
+        layoutOptions: { 'elk.port.side': 'WEST' },
+        labels: [{ id: `n${k}.W.${index}.label`, text: 'I 0.0', width: 43, height: 14 }],
+      })).concat([{ id: `n${k}.E.0`, x: 60, y: 39, width: 0, height: 0, layoutOptions: { 'elk.port.side': 'EAST' }, labels: [] }]),
+    });
+    if (k >= 3) edges.push({ id: `e${k}`, sources: [`n${k - 3}.E.0`], targets: [`n${k}.W.${k % 2}`] });
+  }
+  return { id: 'warm-up', layoutOptions: LAYERED_OPTIONS, children, edges };
+}
+
+let queue: Promise<unknown> = (async () => {
+  for (let k = 0; k < 3; k += 1) await elk.layout(warmUp()).catch(() => undefined);
+})();
 
 async function answer({ id, graph }: Request): Promise<void> {
   const started = performance.now();
