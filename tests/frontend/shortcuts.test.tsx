@@ -138,21 +138,23 @@ describe('the shortcuts dialog', () => {
 });
 
 describe('start page and About texts', () => {
-  it('count the editors, the simulator and monitoring as here, LAD/FBD, Graph and lessons as coming', async () => {
+  it('count the editors (LAD/FBD too), the simulator and monitoring as here, Graph and lessons as coming', async () => {
     healthyServer();
     const { user } = renderApp();
     const page = screen.getByTestId('start-page');
     const [now, next] = within(page).getAllByRole('list').slice(0, 2) as [HTMLElement, HTMLElement];
-    for (const feature of ['Projects stored on the server', 'STL and SCL editors', 'CPU simulator', 'Online monitoring']) {
+    for (const feature of ['Projects stored on the server', 'STL and SCL editors', 'LAD and FBD editors', 'CPU simulator', 'Online monitoring']) {
       expect(within(now).getByText(feature)).toBeTruthy();
     }
-    for (const feature of ['LAD and FBD editors', 'S7-Graph editor', 'Lessons']) expect(within(next).getByText(feature)).toBeTruthy();
+    for (const feature of ['S7-Graph editor', 'Lessons']) expect(within(next).getByText(feature)).toBeTruthy();
     expect(within(next).queryByText('CPU simulator')).toBeNull();
+    expect(within(next).queryByText('LAD and FBD editors')).toBeNull();
     await user.click(screen.getByTestId('help-button'));
     const about = screen.getByTestId('about-dialog');
     const [here, coming] = within(about).getAllByRole('list') as [HTMLElement, HTMLElement];
     expect(here.textContent).toContain('STL and SCL editors');
     expect(here.textContent).toContain('Online monitoring');
-    expect(coming.textContent).toBe('LAD, FBD and S7-Graph editors.Lessons with exercises checked automatically.');
+    expect(here.textContent).toContain('LAD and FBD editors');
+    expect(coming.textContent).toBe('The S7-Graph editor.Lessons with exercises checked automatically.');
   });
 });

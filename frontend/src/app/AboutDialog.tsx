@@ -4,7 +4,7 @@ import { useServerHealth } from '../health/ServerHealth';
 import { Dialog } from '../ui/Dialog';
 import { NasaqMark } from '../ui/icons';
 
-const HERE = ['projects', 'editors', 'simulator', 'monitoring', 'panels', 'languages'] as const;
+const HERE = ['projects', 'editors', 'diagrams', 'simulator', 'monitoring', 'panels', 'languages'] as const;
 const COMING = ['graphical', 'lessons'] as const;
 
 interface AboutDialogProps {

@@ -7,8 +7,8 @@ import type { SourceLanguage } from './CodeEditor';
 import { useEditorTabs, type EditorTab } from './EditorTabsContext';
 import { SCL_EXAMPLE, STL_EXAMPLE } from './examples';
 
-const WORKS_NOW = ['projects', 'stlScl', 'simulator', 'monitoring', 'languages', 'rtl', 'offline'] as const;
-const COMING = ['ladFbd', 'graph', 'lessons'] as const;
+const WORKS_NOW = ['projects', 'stlScl', 'ladFbd', 'simulator', 'monitoring', 'languages', 'rtl', 'offline'] as const;
+const COMING = ['graph', 'lessons'] as const;
 const STEPS = ['create', 'code', 'download', 'language', 'lessons'] as const;
 
 /** A self-holding motor circuit in STL, as the STL editor shows it. Code stays LTR. */
