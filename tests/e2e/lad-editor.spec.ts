@@ -243,18 +243,27 @@ test('Persian keeps the diagram left to right; axe finds no WCAG A/AA violation 
   expect(await page.locator('html').getAttribute('dir')).toBe('rtl');
 });
 
-test('a file with syntax errors opens in the text view, the diagram says why', async ({ page, request }) => {
+test('a file with syntax errors opens in the text view with its markers; the diagram says why', async ({ page, request }) => {
   const projectId = await newProject(request, EMPTY_OB1.replace('BEGIN', 'BEGIN\nNETWORK\nRUNG\n  Contact(I 0.0\n  Coil(Q 4.0)\nEND_RUNG'));
   await page.goto('/');
   await tree(page).getByTestId(`project-node-${projectId}`).click();
   await tree(page).getByTestId(`file-node-${projectId}-Main.lad`).dblclick();
-  const why = page.getByTestId('lad-cannot-draw');
-  await expect(why).toBeVisible({ timeout: 15_000 });
-  await expect(why).toContainText('LAD111');
-  await why.getByTestId('lad-show-text').click();
   const text = page.locator('.source-view:not([hidden]) [data-testid="code-editor"]');
   await expect(text).toHaveAttribute('data-state', 'ready', { timeout: 15_000 });
+  await expect(page.getByTestId('view-text')).toHaveAttribute('aria-pressed', 'true');
   await expect(text.locator('.squiggly-error').first()).toBeVisible({ timeout: 10_000 });
+  await page.getByTestId('view-LAD').click();
+  const why = page.getByTestId('lad-cannot-draw');
+  await expect(why).toBeVisible();
+  await expect(why).toContainText('LAD111');
+  await why.getByTestId('lad-show-text').click();
+  await expect(text).toBeVisible();
+  // Corrected in the text view, the file draws again.
+  await text.locator('.view-line', { hasText: 'Contact(I 0.0' }).click();
+  await page.keyboard.press('End');
+  await page.keyboard.type(')');
+  await page.getByTestId('view-LAD').click();
+  await expect(page.locator('.source-view:not([hidden]) [data-testid="lad-1-1-e1"]')).toBeVisible({ timeout: 10_000 });
 });
 
 test('an operand of the wrong type on a contact is marked on the element', async ({ page, request }) => {
@@ -315,4 +324,38 @@ test('an STL source shown as LAD without changing it, then converted to a LAD so
   await expect(tree(page).getByTestId(`file-node-${projectId}-OB1.awl`)).toHaveCount(0);
   const converted = page.locator('.source-view:not([hidden]) [data-testid="lad-editor"]');
   await expect(converted.getByTestId('lad-1-1-rung')).toBeVisible({ timeout: 15_000 });
+});
+
+test('nothing typed in the diagram is lost when the server refuses a save or cannot read the file', async ({ page, request }) => {
+  const projectId = await newProject(request, BUILT);
+  await page.goto('/');
+  // The server cannot read the diagram: the editor says so, keeps the text, and tries again.
+  await page.route('**/api/lad/read', (route) => route.fulfill({ status: 503, body: '' }));
+  await tree(page).getByTestId(`project-node-${projectId}`).click();
+  await tree(page).getByTestId(`file-node-${projectId}-Main.lad`).dblclick();
+  const why = page.getByTestId('lad-cannot-draw');
+  await expect(why).toBeVisible({ timeout: 15_000 });
+  await expect(why).toContainText('NET000');
+  await page.unroute('**/api/lad/read');
+  await why.getByRole('button', { name: 'Try again' }).click();
+  const editor = page.locator('.source-view:not([hidden]) [data-testid="lad-editor"]');
+  await expect(editor.getByTestId('lad-1-1-e2')).toBeVisible({ timeout: 10_000 });
+
+  // A save refused by the server: the edit stays in the diagram and goes through later.
+  await page.route(`**/api/projects/${projectId}/files/Main.lad`, (route) =>
+    route.request().method() === 'PUT'
+      ? route.fulfill({ status: 500, contentType: 'application/json', body: JSON.stringify({ error: { code: 'API100', key: 'internal_error', message: 'boom', params: {} } }) })
+      : route.continue(),
+  );
+  await editor.getByTestId('network-1-2-header').click();
+  await page.keyboard.press('Control+R');
+  await page.keyboard.press('Shift+F2');
+  await typeOperand(page, 'I 1.7');
+  await expect(page.getByTestId('save-failed')).toBeVisible({ timeout: 10_000 });
+  await expect(editor.getByTestId('lad-1-3-e1')).toHaveAttribute('aria-label', /I 1\.7/);
+  expect(await savedText(request, projectId)).toBe(BUILT);
+  await page.unroute(`**/api/projects/${projectId}/files/Main.lad`);
+  await page.getByTestId('save-failed').getByRole('button').click();
+  await expect.poll(() => savedText(request, projectId)).toContain('Contact(I 1.7)');
+  await expect(page.getByTestId('save-failed')).toHaveCount(0);
 });

@@ -145,6 +145,14 @@ export function LadSourceViews({ tab, active, monitoring, onMonitorProblem, text
   const [busy, setBusy] = useState(false);
   const initialView = useRef(views.has(tab.id));
 
+  // A file that cannot be drawn opens in its text view (the diagram views say why).
+  useEffect(() => {
+    if (doc.state.status !== 'unreadable' || initialView.current) return;
+    initialView.current = true;
+    setTextShown(true);
+    setViewState('text');
+  }, [doc.state.status]);
+
   // The first time the file is read, the view follows the blocks' language (an FBD block in a .lad file).
   useEffect(() => {
     if (initialView.current || !doc.blocks || doc.blocks.length === 0) return;

@@ -22,7 +22,7 @@ import { BreakpointDialog } from '../editor/monitoring/BreakpointDialog';
 import { breakpoints, breakpointKey } from '../editor/monitoring/breakpointStore';
 import { RowMenu, type MenuAction } from '../projects/RowMenu';
 import { useProjectContents } from '../projects/projectContents';
-import { readStored, writeStored } from '../ui/usePersistentState';
+import { readStored, usePersistentFlag, writeStored } from '../ui/usePersistentState';
 import { useUiLanguage } from '../i18n/useDocumentLanguage';
 import { CATALOGUE_MIME, CataloguePanel, Favourites, type Command } from './Catalogue';
 import { copyNetworks, pasteNetworks } from './clipboard';
@@ -218,11 +218,19 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
       return set.has(label.replace(/\s+/g, '').toUpperCase());
     };
   }, [monitor.online, forcedList, symbols]);
-  const formatValue = useCallback((value: unknown) => {
-    if (typeof value === 'boolean') return value ? '1' : '0';
-    if (typeof value === 'number') return Number.isInteger(value) ? String(value) : value.toPrecision(6);
-    return String(value);
-  }, []);
+  // The status values in decimal or hexadecimal: the same choice as the STL status columns'.
+  const [hex, setHex] = usePersistentFlag('nasaq.debug.accuHex', false);
+  const formatValue = useCallback(
+    (value: unknown) => {
+      if (typeof value === 'boolean') return value ? '1' : '0';
+      if (typeof value === 'number') {
+        if (!Number.isInteger(value)) return value.toPrecision(6);
+        return hex ? `16#${(value >>> 0).toString(16).toUpperCase()}` : String(value);
+      }
+      return String(value);
+    },
+    [hex],
+  );
 
   // -- diagnostics on elements and networks ------------------------------------------------------
   const blockStarts = useMemo(() => blockLines(text), [text]);
@@ -799,6 +807,11 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
         >
           {t(`lad.display.${display}`)}
         </button>
+        {monitor.online ? (
+          <button type="button" className="lad-tool" aria-pressed={hex} data-testid="lad-hex" title={t('lad.toolbar.formatTitle')} onClick={() => setHex(!hex)}>
+            {hex ? t('debug.status.hex') : t('debug.status.dec')}
+          </button>
+        ) : null}
         <button type="button" className="lad-tool" aria-pressed={catalogueOpen} data-testid="lad-catalogue-toggle" onClick={() => toggleCatalogue(!catalogueOpen)}>
           {t('lad.catalogue.title')}
         </button>
