@@ -24,6 +24,17 @@ const NEVER_FETCHED = [
   /^https:\/\/github\.com\/microsoft\/vscode\/issues\/103170$/, // a CSS comment inside a style sheet string
   /^https:\/\/github\.com\/markedjs\/marked\.$/, // marked's error text ("Please report this to ...")
   /^https:\/\/microsoft\.com$/, // Monaco's markdown renderer: stand-in target for an unfinished link while streaming chat text (fillInIncompleteTokens; hovers never set it)
+  // elkjs 0.12.1 (the diagram layout, in its worker): Java code compiled to JavaScript, carrying
+  // the Eclipse Modeling Framework's package and XML Schema type names. They are identifiers
+  // (namespace URIs compared as strings), never opened:
+  /^http:\/\/www\.w3\.org\/2001\/XMLSchema#(boolean|byte|decimal|double|float|hexBinary|int|integer|long|short|string)$/,
+  /^http:\/\/www\.eclipse\.org\/elk\/ElkGraph$/,
+  /^http:\/\/www\.eclipse\.org\/emf\/2002\/Ecore$/,
+  /^http:\/\/www\.eclipse\.org\/emf\/2003\/XMLType$/,
+  /^http:\/\/\/org\/eclipse\/emf\/ecore\/util\/ExtendedMetaData$/,
+  // The bundler's runtime: the text of the error thrown when CommonJS code (elkjs) would
+  // require a module that is not in the build.
+  /^https:\/\/rolldown\.rs\/in-depth\/bundling-cjs#require-external-modules$/,
 ];
 
 function filesUnder(folder: string): string[] {

@@ -16,7 +16,7 @@ import re
 from bisect import bisect_right
 from dataclasses import dataclass, field
 
-from nasaq.diagnostics import Diagnostic
+from nasaq.diagnostics import Diagnostic, Span
 from nasaq.lang.lad.text import parse_lad
 from nasaq.lang.lad.to_stl import lower_block
 
@@ -61,21 +61,23 @@ def lower_file(name: str, text: str) -> LoweredFile:
     out: list[str] = []
     origins: list[tuple[int, int | None]] = []
     elements: list[str | None] = []
+    syntax_lines = sorted(
+        d.span.line
+        for d in diagnostics
+        if d.severity == "error" and d.span is not None and d.span.line is not None
+    )
     for number, block in enumerate(blocks):
         lowered = lower_block(block)
         stl, problems = lowered.text, lowered.diagnostics
         elements += lowered.elements
-        for problem in problems:
-            span = problem.span
-            if span is not None and span.file is None:
-                problem = problem.model_copy(
-                    update={"span": span.model_copy(update={"file": name})}
-                )
-            diagnostics.append(problem)
         block_line = lad_blocks[number] if number < len(lad_blocks) else 1
         # The LAD header lines of this block's networks, in order.
         ends = lad_blocks[number + 1] if number + 1 < len(lad_blocks) else len(text) + 1
         network_lines = [line for line in lad_networks if block_line <= line < ends]
+        for problem in problems:
+            placed = _on_network(problem, name, network_lines, ends, syntax_lines)
+            if placed is not None:
+                diagnostics.append(placed)
         lines = stl.rstrip("\n").split("\n")
         generated = [k for k, line in enumerate(lines) if _NETWORK.match(line)]
         for k in range(len(lines)):
@@ -86,6 +88,29 @@ def lower_file(name: str, text: str) -> LoweredFile:
                 origins.append((network_lines[seen - 1], seen))
         out += lines
     return LoweredFile("\n".join(out) + "\n", diagnostics, origins, elements)
+
+
+def _on_network(
+    problem: Diagnostic, name: str, network_lines: list[int], end: int, syntax_lines: list[int]
+) -> Diagnostic | None:
+    """A problem of the lowering, placed in the file on its network's line; None when that
+    network has a syntax error, which is the one message its mistake gives (a coil dropped by
+    the reader would otherwise also be "no output yet")."""
+    span = problem.span
+    update: dict[str, object] = {"file": name} if span is None or span.file is None else {}
+    network = span.network if span is not None else None
+    if network is not None and 1 <= network <= len(network_lines):
+        first = network_lines[network - 1]
+        last = network_lines[network] if network < len(network_lines) else end
+        index = bisect_right(syntax_lines, first - 1)
+        if index < len(syntax_lines) and syntax_lines[index] < last:
+            return None
+        if span is None or span.line is None:
+            update["line"] = first
+    if not update:
+        return problem
+    base = span if span is not None else Span()
+    return problem.model_copy(update={"span": base.model_copy(update=update)})
 
 
 def moved_to_lad(diagnostic: Diagnostic, lowered: LoweredFile) -> Diagnostic:

@@ -429,6 +429,18 @@ def test_a_wrong_operand_type_on_a_contact_is_placed_on_the_contact() -> None:
         if d.span is not None
     ]
     assert placed == [
-        ("LAD211", "main.lad", None, 1, None),
+        ("LAD211", "main.lad", 3, 1, None),
         ("STL204", "main.lad", 5, 2, "e2"),
     ]
+
+
+def test_a_syntax_error_is_the_one_message_of_its_network() -> None:
+    """A coil the reader drops for a missing bracket does not also make the rung "without an
+    output": the syntax error is the one message; the other networks are still checked."""
+    text = (
+        "ORGANIZATION_BLOCK OB 1\nBEGIN\nNETWORK\nRUNG\n  Contact(I 0.0)\n  Coil(Q 4.0\n"
+        "END_RUNG\nNETWORK\nRUNG Contact(I 0.1) END_RUNG\nEND_ORGANIZATION_BLOCK\n"
+    )
+    result = compile_sources([SourceFile("main.lad", text)])
+    placed = [(d.code, d.span.line, d.span.network) for d in result.diagnostics if d.span]
+    assert placed == [("LAD111", 7, 1), ("LAD211", 8, 2)]
