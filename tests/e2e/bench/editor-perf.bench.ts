@@ -8,10 +8,11 @@
  */
 import type { APIRequestContext, Page } from '@playwright/test';
 import { test, expect } from '../fixtures';
+import { observeLongTasks, openDownloadAndRun, takeLongTasks } from './benchPage';
 import { OB1, sclSource, stlBlock } from './sources';
 
 type Monaco = typeof import('monaco-editor/editor/editor.api');
-type Bench = Window & { monaco: Monaco; nasaqLongTasks: number[] };
+type Bench = Window & { monaco: Monaco };
 
 /** The target of the issue: no task of the page may block it this long. */
 const LIMIT_MS = 100;
@@ -45,16 +46,6 @@ async function makeProject(request: APIRequestContext): Promise<number> {
   };
   expect(build.diagnostics.filter((d) => d.severity === 'error')).toEqual([]);
   return id;
-}
-
-/** Takes the long tasks recorded so far and starts a new list. */
-function takeLongTasks(page: Page): Promise<number[]> {
-  return page.evaluate(() => {
-    const bench = window as unknown as Bench;
-    const tasks = bench.nasaqLongTasks;
-    bench.nasaqLongTasks = [];
-    return tasks;
-  });
 }
 
 /** How long one scroll pass may take before the bench gives up on it (and says so). */
@@ -115,25 +106,9 @@ async function measuredScroll(page: Page): Promise<Pass> {
 
 test('large STL and SCL sources open, scroll and monitor without blocking the page', async ({ page, request }) => {
   const projectId = await makeProject(request);
-  await page.addInitScript(() => {
-    const bench = window as unknown as Bench;
-    bench.nasaqLongTasks = [];
-    new PerformanceObserver((list) => {
-      for (const entry of list.getEntries()) bench.nasaqLongTasks.push(entry.duration);
-    }).observe({ type: 'longtask', buffered: true });
-  });
-  await page.setViewportSize({ width: 1440, height: 900 });
-  await page.goto('/');
-  await expect(page.getByTestId('server-status')).toHaveAttribute('data-state', 'online');
-  const node = page.getByTestId('block-tree').getByRole('treeitem', { name: PROJECT, exact: true });
-  await node.click();
-  await expect(node).toHaveAttribute('aria-expanded', 'true');
-
+  await observeLongTasks(page);
   // Download and RUN: the CPU scans the 500 networks while the editor is used.
-  await page.keyboard.press('Control+B');
-  await expect(page.getByTestId('cpu-state')).toHaveAttribute('data-mode', 'stop', { timeout: 60_000 });
-  await page.getByTestId('cpu-run').click();
-  await expect(page.getByTestId('cpu-state')).toHaveAttribute('data-mode', 'run');
+  await openDownloadAndRun(page, PROJECT);
 
   const rows: Row[] = [];
   for (const file of FILES.filter((f) => f.label)) {

@@ -11,9 +11,8 @@
  */
 import type { APIRequestContext, Page } from '@playwright/test';
 import { test, expect } from '../fixtures';
+import { observeLongTasks, openDownloadAndRun, takeLongTasks } from './benchPage';
 import { fbdBlock, ladBlock } from './ladSources';
-
-type Bench = Window & { nasaqLongTasks: number[] };
 
 const TASK_LIMIT_MS = 100;
 const FIRST_DRAWN_LIMIT_MS = 1000;
@@ -34,15 +33,6 @@ async function makeProject(request: APIRequestContext): Promise<number> {
   const build = (await (await request.get(`/api/projects/${id}/blocks`)).json()) as { diagnostics: Array<{ severity: string; code: string; message: string }> };
   expect(build.diagnostics.filter((d) => d.severity === 'error')).toEqual([]);
   return id;
-}
-
-function takeLongTasks(page: Page): Promise<number[]> {
-  return page.evaluate(() => {
-    const bench = window as unknown as Bench;
-    const tasks = bench.nasaqLongTasks;
-    bench.nasaqLongTasks = [];
-    return tasks;
-  });
 }
 
 /** Scrolls the network list a page per two frames, down then up; false if it ran out of time. */
@@ -69,23 +59,8 @@ function scrollThrough(page: Page): Promise<{ complete: boolean; steps: number }
 
 test('a 500-network LAD block opens, scrolls and monitors without blocking; a 40-box FBD network lays out fast', async ({ page, request }) => {
   const projectId = await makeProject(request);
-  await page.addInitScript(() => {
-    const bench = window as unknown as Bench;
-    bench.nasaqLongTasks = [];
-    new PerformanceObserver((list) => {
-      for (const entry of list.getEntries()) bench.nasaqLongTasks.push(entry.duration);
-    }).observe({ type: 'longtask', buffered: true });
-  });
-  await page.setViewportSize({ width: 1440, height: 900 });
-  await page.goto('/');
-  await expect(page.getByTestId('server-status')).toHaveAttribute('data-state', 'online');
-  const node = page.getByTestId('block-tree').getByRole('treeitem', { name: PROJECT, exact: true });
-  await node.click();
-  await expect(node).toHaveAttribute('aria-expanded', 'true');
-  await page.keyboard.press('Control+B');
-  await expect(page.getByTestId('cpu-state')).toHaveAttribute('data-mode', 'stop', { timeout: 60_000 });
-  await page.getByTestId('cpu-run').click();
-  await expect(page.getByTestId('cpu-state')).toHaveAttribute('data-mode', 'run');
+  await observeLongTasks(page);
+  await openDownloadAndRun(page, PROJECT);
 
   // Opening: from the double click until the first rung is on screen.
   await takeLongTasks(page);
