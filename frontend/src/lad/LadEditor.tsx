@@ -12,7 +12,6 @@ import { useCallback, useEffect, useMemo, useRef, useState, useSyncExternalStore
 import { createPortal } from 'react-dom';
 import { useTranslation } from 'react-i18next';
 import type { Problem } from '../api/monitorClient';
-import type { Diagnostic } from '../api/types';
 import { useMonitor, useSession } from '../cpu/SessionContext';
 import { NetworkList, type NetworkListHandle } from '../diagram/NetworkList';
 import { arrowDirection, nextInDirection, type NavItem } from '../diagram/navigation';
@@ -21,27 +20,31 @@ import { outlines } from '../editor/intellisense/outlineStore';
 import { BreakpointDialog } from '../editor/monitoring/BreakpointDialog';
 import { breakpoints, breakpointKey } from '../editor/monitoring/breakpointStore';
 import { RowMenu, type MenuAction } from '../projects/RowMenu';
+import { elementMenu, networkMenu } from './menus';
+import { blockLines, problemsByNetwork } from './problems';
+import { FieldEditor, type Editing } from './FieldEditor';
 import { useProjectContents } from '../projects/projectContents';
 import { readStored, usePersistentFlag, writeStored } from '../ui/usePersistentState';
 import { useUiLanguage } from '../i18n/useDocumentLanguage';
-import { CATALOGUE_MIME, CataloguePanel, Favourites, type Command } from './Catalogue';
+import { CATALOGUE_MIME, CataloguePanel, type Command } from './Catalogue';
+import { DISPLAYS, LadToolbar } from './LadToolbar';
 import { copyNetworks, pasteNetworks } from './clipboard';
 import { isPlaceholder } from './edits';
 import { callInterface, callItems, connectPin } from './calls';
 import { CATALOGUE_ITEMS, catalogueItem, emptyBox, type CatalogueItem } from './elements';
-import { STATUS_BITS, fieldText, withField } from './fields';
+import { STATUS_BITS, withField } from './fields';
 import { rungSize } from './geometry';
 import { fbdBodyHeight, fbdLayoutVersion, subscribeFbdLayouts } from './fbdGeometry';
 import { FbdView } from './FbdView';
-import { fieldPosition, navItemsOf, type DiagramMode } from './positions';
+import { navItemsOf } from './positions';
 import * as commands from './ladCommands';
 import { LadRung, type RungProblem } from './LadRung';
 import { layoutOf } from './layoutCache';
 import type { LadBlock, Network } from './model';
 import { HEADER_H, COMMENT_LINE_H, NETWORK_PAD, NetworkView, commentLines, stlBodyHeight, type NetworkBreakpoint } from './NetworkView';
 import { ModifyDialog } from './ModifyDialog';
-import { OperandEditor, type Complete } from './OperandEditor';
-import { listCompleter, operandCompleter, operandLabel, outlineBlock, symbolIndex, type OperandDisplay } from './operands';
+import type { Complete } from './OperandEditor';
+import { isInput, listCompleter, operandCompleter, operandLabel, outlineBlock, symbolIndex, type OperandDisplay } from './operands';
 import { networkFlows } from './status';
 import { findById, type Selection } from './ladCommands';
 import type { LadDocument } from './useLadDocument';
@@ -71,21 +74,11 @@ export interface LadEditorProps {
   onMonitorProblem: (problem: Problem | null) => void;
 }
 
-interface Editing {
-  block: number;
-  network: number;
-  /** An element id, or `header` for the title, comment, label or STL of the network. */
-  id: string;
-  field: string;
-}
-
 interface MenuState {
   anchor: Element;
   label: string;
   actions: MenuAction[];
 }
-
-const DISPLAYS: readonly OperandDisplay[] = ['both', 'symbolic', 'absolute'];
 
 function storedDisplay(): OperandDisplay {
   const stored = readStored(DISPLAY_KEY);
@@ -495,47 +488,31 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
       const network = blocks[b]?.networks[n];
       const element = network ? findById(network, id) : null;
       if (!element) return;
-      const actions: MenuAction[] = [];
-      const operand = element.kind === 'contact' || element.kind === 'coil' || element.kind === 'midline' ? element.operand : null;
-      if (editable) {
-        actions.push({ id: 'edit', label: t('lad.menu.edit'), onSelect: editSelected });
-        if (element.kind === 'contact' || element.kind === 'status') {
-          actions.push({ id: 'negate', label: t('lad.menu.negate'), onSelect: () => apply((all, s) => commands.replaceSelected(all, s, id, { ...element, negated: !element.negated }), t('lad.menu.negate')) });
-        }
-      }
-      if (monitor.online && operand && !isPlaceholder(operand)) {
-        const input = isInput(operand, symbols.byName);
-        const write = (value: boolean | number) => void command(input ? { type: 'set_input', address: operand, value } : { type: 'modify', target: operand, value });
-        actions.push({ id: 'modify1', label: t('lad.menu.modify1'), onSelect: () => write(true) });
-        actions.push({ id: 'modify0', label: t('lad.menu.modify0'), onSelect: () => write(false) });
-        actions.push({ id: 'force1', label: t('lad.menu.force1'), onSelect: () => void command({ type: 'force', address: operand, value: true }) });
-        actions.push({ id: 'force0', label: t('lad.menu.force0'), onSelect: () => void command({ type: 'force', address: operand, value: false }) });
-        actions.push({ id: 'unforce', label: t('lad.menu.unforce'), onSelect: () => void command({ type: 'unforce', address: operand }) });
-      }
-      if (editable && element.kind === 'box') {
-        for (const pin of callInterface(element.name, outline) ?? []) {
-          if (pin.name in element.inputs || pin.name in element.outputs) continue;
-          actions.push({
-            id: `connect-${pin.name}`,
-            label: t('lad.menu.connect', { pin: pin.name, type: pin.type }),
-            onSelect: () => {
-              apply((all, s) => commands.replaceSelected(all, s, id, connectPin(element, pin)), t('lad.menu.connect', { pin: pin.name, type: pin.type }));
-              setEditing({ block: b, network: n, id, field: `pin:${pin.name}` });
-            },
-          });
-        }
-      }
-      if (monitor.online && element.kind === 'box') {
-        for (const [pin, value] of Object.entries(element.inputs)) {
-          if (typeof value !== 'string' || isPlaceholder(value) || /^[-+]?\d|#/.test(value)) continue;
-          actions.push({
-            id: `modify-${pin}`,
-            label: t('lad.menu.modifyPin', { pin, operand: value }),
-            onSelect: () => setModifying(value),
-          });
-        }
-      }
-      if (editable) actions.push({ id: 'delete', label: t('lad.menu.delete'), danger: true, onSelect: () => apply((all, s) => commands.deleteSelected(all, s), t('lad.undo.delete')) });
+      const at: Selection = { block: b, network: n, id, point: null };
+      const actions = elementMenu({
+        t,
+        element,
+        editable,
+        online: monitor.online,
+        callPins: element.kind === 'box' ? callInterface(element.name, outline) : null,
+        isInput: (operand) => isInput(operand, symbols.byName),
+        on: {
+          edit: editSelected,
+          negate: () => {
+            if (element.kind === 'contact' || element.kind === 'status') apply((all) => commands.replaceSelected(all, at, id, { ...element, negated: !element.negated }), t('lad.menu.negate'));
+          },
+          write: (operand, value, input) => void command(input ? { type: 'set_input', address: operand, value } : { type: 'modify', target: operand, value }),
+          force: (operand, value) => void command({ type: 'force', address: operand, value }),
+          unforce: (operand) => void command({ type: 'unforce', address: operand }),
+          connect: (pin) => {
+            if (element.kind !== 'box') return;
+            apply((all) => commands.replaceSelected(all, at, id, connectPin(element, pin)), t('lad.menu.connect', { pin: pin.name, type: pin.type }));
+            setEditing({ block: b, network: n, id, field: `pin:${pin.name}` });
+          },
+          modify: setModifying,
+          remove: () => apply((all) => commands.deleteSelected(all, at), t('lad.undo.delete')),
+        },
+      });
       if (actions.length === 0) return;
       const anchor = document.getElementById(`lad-${prefixOf(b, n)}-${id}`) ?? (event.target as Element);
       setMenu({ anchor, label: t('lad.menu.element'), actions });
@@ -547,25 +524,21 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
     (b: number, n: number, event: MouseEvent) => {
       const block = blocks[b];
       if (!block) return;
-      const actions: MenuAction[] = [];
-      if (editable) {
-        actions.push({ id: 'insert', label: t('lad.menu.insertNetwork'), onSelect: addNetwork });
-        actions.push({ id: 'title', label: t('lad.menu.editTitle'), onSelect: () => setEditing({ block: b, network: n, id: 'header', field: 'title' }) });
-        actions.push({ id: 'comment', label: t('lad.menu.editComment'), onSelect: () => setEditing({ block: b, network: n, id: 'header', field: 'comment' }) });
-        actions.push({ id: 'label', label: t('lad.menu.editLabel'), onSelect: () => setEditing({ block: b, network: n, id: 'header', field: 'label' }) });
-        actions.push({ id: 'up', label: t('lad.menu.moveUp'), onSelect: () => apply((all, s) => commands.moveNetwork(all, s, -1), t('lad.undo.moveNetwork')) });
-        actions.push({ id: 'down', label: t('lad.menu.moveDown'), onSelect: () => apply((all, s) => commands.moveNetwork(all, s, 1), t('lad.undo.moveNetwork')) });
-      }
-      actions.push({ id: 'copy', label: t('lad.menu.copy'), onSelect: () => clipboardAction('copy') });
-      if (editable) {
-        actions.push({ id: 'cut', label: t('lad.menu.cut'), onSelect: () => clipboardAction('cut') });
-        actions.push({ id: 'paste', label: t('lad.menu.paste'), onSelect: () => clipboardAction('paste') });
-      }
-      if (projectId !== null && file) {
-        actions.push({ id: 'breakpoint', label: t('lad.menu.breakpoint'), onSelect: toggleBreakpoint });
-        actions.push({ id: 'condition', label: t('lad.menu.breakpointCondition'), onSelect: () => setBreakpointDialog({ block: block.name, network: n + 1 }) });
-      }
-      if (editable) actions.push({ id: 'delete', label: t('lad.menu.deleteNetwork'), danger: true, onSelect: () => apply((all, s) => commands.deleteNetwork(all, s), t('lad.undo.deleteNetwork')) });
+      const at: Selection = { block: b, network: n, id: null, point: null };
+      const actions = networkMenu({
+        t,
+        editable,
+        breakpoints: projectId !== null && !!file,
+        on: {
+          insert: addNetwork,
+          editField: (field) => setEditing({ block: b, network: n, id: 'header', field }),
+          move: (delta) => apply((all) => commands.moveNetwork(all, at, delta), t('lad.undo.moveNetwork')),
+          clipboard: clipboardAction,
+          toggleBreakpoint,
+          breakpointCondition: () => setBreakpointDialog({ block: block.name, network: n + 1 }),
+          remove: () => apply((all) => commands.deleteNetwork(all, at), t('lad.undo.deleteNetwork')),
+        },
+      });
       const anchor = document.getElementById(`${prefixOf(b, n)}-header`) ?? (event.target as Element);
       setMenu({ anchor, label: t('lad.menu.network'), actions });
     },
@@ -758,7 +731,6 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
     return null; // the source view shows why (and the text view)
   }
 
-  const displayIndex = DISPLAYS.indexOf(display);
   return (
     <div
       ref={root}
@@ -771,56 +743,27 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
         if (editable && event.dataTransfer.types.includes(CATALOGUE_MIME) && !dragging) setDragging(true);
       }}
     >
-      <div className="lad-toolbar" role="toolbar" aria-label={t('lad.toolbar.label')} dir={dir} lang={language}>
-        <button type="button" className="lad-tool" disabled={!editable || !doc.canUndo} onClick={doc.undo} data-testid="lad-undo" aria-keyshortcuts="Control+Z" title={`${t('lad.toolbar.undo')} (Ctrl+Z)`}>
-          {t('lad.toolbar.undo')}
-        </button>
-        <button type="button" className="lad-tool" disabled={!editable || !doc.canRedo} onClick={doc.redo} data-testid="lad-redo" aria-keyshortcuts="Control+Y" title={`${t('lad.toolbar.redo')} (Ctrl+Y)`}>
-          {t('lad.toolbar.redo')}
-        </button>
-        <span className="lad-toolbar__sep" />
-        <button type="button" className="lad-tool" disabled={!editable} onClick={addNetwork} data-testid="lad-insert-network" aria-keyshortcuts="Control+R" title={`${t('lad.toolbar.addNetwork')} (Ctrl+R)`}>
-          {t('lad.toolbar.addNetwork')}
-        </button>
-        <span className="lad-toolbar__sep" />
-        <Favourites
-          items={favourites}
-          disabled={!editable}
-          onInsert={insert}
-          onCommand={runCommand}
-          onDragStart={() => setDragging(true)}
-          onDragEnd={() => setDragging(false)}
-        />
-        <button type="button" className="lad-tool" disabled={!editable} onClick={() => insert(emptyBoxItem)} data-testid="favourite-emptyBox" aria-keyshortcuts="Shift+F5" title={`${t('lad.items.emptyBox')} (Shift+F5)`} aria-label={t('lad.items.emptyBox')}>
-          <span className="lad-tool__symbol" dir="ltr">
-            [??]
-          </span>
-        </button>
-        <span className="lad-toolbar__sep" />
-        <button
-          type="button"
-          className="lad-tool"
-          data-testid="lad-display"
-          data-display={display}
-          onClick={() => setDisplay(DISPLAYS[(displayIndex + 1) % DISPLAYS.length] ?? 'both')}
-          title={t('lad.toolbar.displayTitle')}
-        >
-          {t(`lad.display.${display}`)}
-        </button>
-        {monitor.online ? (
-          <button type="button" className="lad-tool" aria-pressed={hex} data-testid="lad-hex" title={t('lad.toolbar.formatTitle')} onClick={() => setHex(!hex)}>
-            {hex ? t('debug.status.hex') : t('debug.status.dec')}
-          </button>
-        ) : null}
-        <button type="button" className="lad-tool" aria-pressed={catalogueOpen} data-testid="lad-catalogue-toggle" onClick={() => toggleCatalogue(!catalogueOpen)}>
-          {t('lad.catalogue.title')}
-        </button>
-        {notice ? (
-          <span className="lad-toolbar__notice" role="status" onAnimationEnd={() => setNotice(null)}>
-            {notice}
-          </span>
-        ) : null}
-      </div>
+      <LadToolbar
+        editable={editable}
+        canUndo={doc.canUndo}
+        canRedo={doc.canRedo}
+        onUndo={doc.undo}
+        onRedo={doc.redo}
+        onAddNetwork={addNetwork}
+        favourites={favourites}
+        emptyBox={emptyBoxItem}
+        onInsert={insert}
+        onCommand={runCommand}
+        onDragging={setDragging}
+        display={display}
+        onDisplay={setDisplay}
+        hex={monitor.online ? hex : null}
+        onHex={setHex}
+        catalogueOpen={catalogueOpen}
+        onCatalogue={toggleCatalogue}
+        notice={notice}
+        onNoticeEnd={() => setNotice(null)}
+      />
       <div className="lad-editor__main" dir={dir} lang={language}>
         <div className="lad-editor__list" onKeyDown={onKeyDown} tabIndex={-1} dir="ltr">
           <NetworkList
@@ -885,78 +828,3 @@ function reasonText(t: (key: string) => string, code: string): string {
   return t(`lad.reasons.${code}`);
 }
 
-function isInput(operand: string, byName: ReadonlyMap<string, string>): boolean {
-  const quoted = /^"([^"]*)"$/.exec(operand.trim());
-  const address = quoted ? (byName.get((quoted[1] ?? '').toLowerCase()) ?? '') : operand;
-  return /^\s*[IE]\s*\d/i.test(address);
-}
-
-interface Problems {
-  block: Map<number, RungProblem[]>;
-  networks: Map<string, { network: RungProblem[]; elements: Map<string, RungProblem[]>; elementCount: number }>;
-}
-
-const BLOCK_START = /^\s*(ORGANIZATION_BLOCK|FUNCTION_BLOCK|FUNCTION)(?!\w)/i;
-
-/** The 1-based lines where the file's blocks start. */
-function blockLines(text: string): number[] {
-  const starts: number[] = [];
-  text.split('\n').forEach((line, k) => {
-    if (BLOCK_START.test(line)) starts.push(k + 1);
-  });
-  return starts;
-}
-
-/** The file's diagnostics placed on blocks (by their line), networks and elements. */
-function problemsByNetwork(diagnostics: readonly Diagnostic[], file: string | null, blockStarts: readonly number[], message: (d: Diagnostic) => string): Problems {
-  const out: Problems = { block: new Map(), networks: new Map() };
-  if (!file) return out;
-  const own = diagnostics.filter((d) => d.span?.file === file && d.severity !== 'info');
-  if (own.length === 0) return out;
-  for (const diagnostic of own) {
-    const span = diagnostic.span;
-    const problem: RungProblem = { code: diagnostic.code, message: message(diagnostic), severity: diagnostic.severity };
-    const line = span?.line ?? 1;
-    let b = 0;
-    blockStarts.forEach((start, k) => {
-      if (start <= line) b = k;
-    });
-    const network = span?.network ?? null;
-    if (network === null) {
-      const list = out.block.get(b) ?? [];
-      list.push(problem);
-      out.block.set(b, list);
-      continue;
-    }
-    const key = `${b}:${network - 1}`;
-    const entry = out.networks.get(key) ?? { network: [] as RungProblem[], elements: new Map<string, RungProblem[]>(), elementCount: 0 };
-    const element = span?.element ?? null;
-    if (element) {
-      const list = entry.elements.get(element) ?? [];
-      list.push(problem);
-      entry.elements.set(element, list);
-      entry.elementCount += 1;
-    } else entry.network.push(problem);
-    out.networks.set(key, entry);
-  }
-  return out;
-}
-
-/** The field editor over the element being typed on. */
-function FieldEditor({ edit, network, mode, completer, onCommit, onCancel }: { edit: Editing; network: Network; mode: DiagramMode; completer: Complete; onCommit: (edit: Editing, text: string) => void; onCancel: () => void }) {
-  const { t } = useTranslation();
-  const element = findById(network, edit.id);
-  if (!element) return null;
-  const { x, y } = fieldPosition(network, mode, edit.id, edit.field);
-  return (
-    <OperandEditor
-      key={`${edit.id}:${edit.field}`}
-      initial={fieldText(element, edit.field)}
-      label={t(`lad.fields.${edit.field.startsWith('pin:') ? 'pin' : edit.field}`, { pin: edit.field.slice(4) })}
-      complete={completer}
-      onCommit={(text) => onCommit(edit, text)}
-      onCancel={onCancel}
-      style={{ position: 'absolute', left: x, top: y }}
-    />
-  );
-}

@@ -67,3 +67,10 @@ export function operandCompleter(outline: ProjectOutline | null, block: OutlineB
 export function listCompleter(options: readonly OperandOption[]): Complete {
   return (typed) => ({ from: 1, to: typed.length + 1, options: options.filter((o) => o.label.toLowerCase().includes(typed.trim().toLowerCase())) });
 }
+
+/** Whether an operand (an address or a symbol) is a process input (`I`/`E`): it is driven, not written. */
+export function isInput(operand: string, byName: ReadonlyMap<string, string>): boolean {
+  const quoted = /^"([^"]*)"$/.exec(operand.trim());
+  const address = quoted ? (byName.get((quoted[1] ?? '').toLowerCase()) ?? '') : operand;
+  return /^\s*[IE]\s*\d/i.test(address);
+}

@@ -36,7 +36,8 @@ interface TextSpans {
   after: string[];
 }
 
-const BLOCK_START = /^\s*(ORGANIZATION_BLOCK|FUNCTION_BLOCK|FUNCTION)(?!\w)/i;
+/** A block's header line (the file's structure words, shared with the placing of problems). */
+export const BLOCK_START = /^\s*(ORGANIZATION_BLOCK|FUNCTION_BLOCK|FUNCTION)(?!\w)/i;
 const BLOCK_END = /^\s*END_(ORGANIZATION_BLOCK|FUNCTION_BLOCK|FUNCTION)(?!\w)/i;
 const BEGIN = /^\s*BEGIN(?!\w)/i;
 const NETWORK = /^\s*NETWORK(?!\w)/i;
