@@ -171,9 +171,10 @@ class RungReader(BoxReading):
         """One chain and the targets that end it (a later branch: after its ``A #t``)."""
         start = self.peek()
         reload = self.steps[self.i - 1] if not first else None
-        if reload is not None and self.parallel_from_flow():
-            # ``A #t; = #u; A( ...``: the parallel starts the output's conditions; its flow is
-            # the common logic, so read ``A #t`` as the chain's start and drop it afterwards
+        if reload is not None:
+            # The output's conditions start from the common logic in ``#t``: read ``A #t`` as
+            # the chain's start (a parallel, a box or an edge there acts on that flow) and drop
+            # it afterwards
             self.i -= 1
             elements, final = self.chain(nested=False)
             if not elements or elements[0] != Contact(operand=reload.operand or ""):
@@ -192,18 +193,6 @@ class RungReader(BoxReading):
         if first and not elements and start is not None and start.op != "SET":
             self.refuse("LAD309", start)
         return elements, finals
-
-    def parallel_from_flow(self) -> bool:
-        """Whether ``= #u`` then a bracket follows: the flow kept for a parallel's branches."""
-        step, nxt = self.peek(), self.peek(1)
-        return (
-            step is not None
-            and step.op == "="
-            and is_temp(step.operand)
-            and not step.labels
-            and nxt is not None
-            and nxt.op in ("A(", "O(")
-        )
 
     def assemble(
         self, branches: list[tuple[list[Element], list[Final]]]

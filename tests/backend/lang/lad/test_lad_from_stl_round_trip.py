@@ -117,6 +117,27 @@ NETWORKS: dict[str, Network] = {
     "counter box from the rail": net(box("S_CU", "C 1", PV="C#5", S="I 0.1")),
     "sr from the rail": net(box("SR", "M 0.0", R1="I 0.1")),
     "compare, then or": net(par(s(box("CMP>I", IN1="MW 0", IN2="1"), c("a")), c("b"))),
+    # An output branch whose conditions start with an element acting on the common flow.
+    "branches: timer box before a coil": net(
+        par(c("a"), c("q")),
+        nc("b"),
+        outputs=[out(coil("Q 4.0")), out(coil("Q 4.1"), box("S_ODT", "T 1", TV="S5T#2S"))],
+    ),
+    "branches: counter box before a coil": net(
+        c("a"),
+        outputs=[out(coil("Q 4.0")), out(coil("Q 4.1"), box("S_CU", "C 1", PV="C#5", S="I 0.1"))],
+    ),
+    "branches: move in chain before a coil": net(
+        c("a"),
+        outputs=[out(coil("Q 4.0")), out(coil("Q 4.1"), box("MOVE", IN="1", OUT="MW 2"))],
+    ),
+    "branches: edge before a coil": net(
+        c("a"),
+        outputs=[out(coil("Q 4.0")), out(coil("Q 4.1"), EdgeContact(edge="P", memory="M 3.0"))],
+    ),
+    "branches: not before a coil": net(
+        c("a"), outputs=[out(coil("Q 4.0")), out(coil("Q 4.1"), Invert())]
+    ),
 }
 
 # Shapes whose STL is also the STL of a simpler drawing: the lifter gives the drawing STEP 7
