@@ -359,3 +359,31 @@ test('nothing typed in the diagram is lost when the server refuses a save or can
   await expect.poll(() => savedText(request, projectId)).toContain('Contact(I 1.7)');
   await expect(page.getByTestId('save-failed')).toHaveCount(0);
 });
+
+test('what is typed in the STL view goes back to the block network by network', async ({ page, request }) => {
+  const projectId = await newProject(request, BUILT);
+  await page.goto('/');
+  const editor = await openLad(page, projectId);
+  await page.getByTestId('view-STL').click();
+  const stl = page.getByTestId('stl-view-editor');
+  await expect(stl).toHaveAttribute('data-state', 'ready', { timeout: 15_000 });
+  // Two networks more at the end: one with a LAD shape, one that stays STL (exclusive OR).
+  await stl.locator('.view-lines').click();
+  await page.keyboard.press('Control+End');
+  await page.keyboard.press('ArrowUp'); // END_ORGANIZATION_BLOCK
+  await page.keyboard.press('ArrowUp'); // the last line of the last network
+  await page.keyboard.press('End');
+  await page.keyboard.press('Enter');
+  await page.keyboard.insertText('NETWORK\nTITLE = Added in STL\nA I 1.0\n= Q 5.0\nNETWORK\nTITLE = Kept as STL\nA I 1.1\nX I 1.2\n= Q 5.1\n');
+  await page.getByTestId('view-LAD').click();
+  await expect(editor).toHaveAttribute('data-mode', 'LAD');
+  await expect(editor.getByTestId('network-1-3-title')).toHaveText('Added in STL');
+  await expect(editor.getByTestId('lad-1-3-e1')).toHaveAttribute('aria-label', /I 1\.0/);
+  await expect(editor.getByTestId('network-1-4-stl')).toContainText('LAD305');
+  await expect.poll(() => savedText(request, projectId)).toContain('TITLE = Added in STL');
+  const saved = await savedText(request, projectId);
+  expect(saved).toContain('Contact(I 1.0)');
+  expect(saved).toContain('STL REASON LAD305');
+  // The networks not touched in the STL are written as they were.
+  expect(saved.startsWith(BUILT.slice(0, BUILT.indexOf('END_ORGANIZATION_BLOCK')))).toBe(true);
+});

@@ -22,6 +22,7 @@ import { useUiLanguage } from '../i18n/useDocumentLanguage';
 import { projectContents } from '../projects/projectContents';
 import { LadEditor } from './LadEditor';
 import { setLanguage } from './ladCommands';
+import { mergeLifted } from './stlView';
 import type { LadBlock } from './model';
 import { useLadDocument, type LadDocument } from './useLadDocument';
 
@@ -94,27 +95,37 @@ function CannotDraw({ problems, error, onText, onRetry }: { problems: readonly D
 
 interface StlViewState {
   text: string;
-  /** The STL as converted, to know whether the user changed it. */
+  /** The STL the blocks stand for now (as converted, or as last taken back). */
   original: string;
   error: ApiError | null;
+  /** Why the typed STL cannot go back to the blocks yet (its syntax errors). */
+  problems: readonly Diagnostic[];
 }
 
-/** The STL of a LAD/FBD file's blocks, editable; changes go back when the view is left. */
+/** How long typing in the STL view must rest before the text goes back to the blocks (and is saved). */
+const STL_APPLY_MS = 1500;
+
+/** The STL of a LAD/FBD file's blocks, editable; changes go back after a pause and when the view is left. */
 function useStlView(tab: SourceTab, on: boolean) {
   const [state, setState] = useState<StlViewState | null>(null);
+  const [attempt, setAttempt] = useState(0);
   useEffect(() => {
     if (!on) return;
     const request = new AbortController();
     convertSource(tab.name, tab.text, 'stl', request.signal).then(
-      (converted) => setState({ text: converted.text, original: converted.text, error: null }),
+      (converted) => setState({ text: converted.text, original: converted.text, error: null, problems: [] }),
       (error: unknown) => {
-        if (!request.signal.aborted) setState({ text: '', original: '', error: asApiError(error) });
+        if (!request.signal.aborted) setState({ text: '', original: '', error: asApiError(error), problems: [] });
       },
     );
     return () => request.abort();
-    // Converted when the view opens; the file does not change while it is shown.
-  }, [on]);
-  return [state, setState] as const;
+    // Converted when the view opens (or is tried again); the view's own edits go the other way.
+  }, [on, attempt]);
+  const retry = useCallback(() => {
+    setState(null);
+    setAttempt((n) => n + 1);
+  }, []);
+  return [state, setState, retry] as const;
 }
 
 function stemOf(name: string): string {
@@ -141,7 +152,7 @@ export function LadSourceViews({ tab, active, monitoring, onMonitorProblem, text
   const [textShown, setTextShown] = useState(view === 'text');
   const setText = useCallback((text: string) => updateSource(tab.id, text), [updateSource, tab.id]);
   const doc = useLadDocument(tab.name, tab.text, setText, view !== 'text');
-  const [stl, setStl] = useStlView(tab, view === 'STL');
+  const [stl, setStl, retryStl] = useStlView(tab, view === 'STL');
   const [busy, setBusy] = useState(false);
   const initialView = useRef(views.has(tab.id));
 
@@ -161,31 +172,45 @@ export function LadSourceViews({ tab, active, monitoring, onMonitorProblem, text
     if (language && language !== view && (view === 'LAD' || view === 'FBD')) setViewState(language);
   }, [doc.blocks, view]);
 
-  const leaveStl = useCallback(async (): Promise<boolean> => {
+  /** The typed STL back to the blocks, network by network; false while it cannot (it stays in the view). */
+  const applyStl = useCallback(async (): Promise<boolean> => {
     if (!stl || stl.error || stl.text === stl.original) return true;
+    const typed = stl.text;
     setBusy(true);
     try {
       const language = doc.blocks?.[0]?.language === 'FBD' ? 'fbd' : 'lad';
-      const converted = await convertSource(`${stemOf(tab.name)}.awl`, stl.text, language);
+      const converted = await convertSource(`${stemOf(tab.name)}.awl`, typed, language);
       const blocks = converted.blocks;
-      if (!blocks || converted.diagnostics.some((d) => d.severity === 'error')) {
-        setStl({ ...stl, error: null });
+      const problems = converted.diagnostics.filter((d) => d.severity === 'error');
+      if (!blocks || problems.length > 0) {
+        setStl((current) => (current ? { ...current, problems } : current));
         return false;
       }
-      doc.edit(() => blocks, t('lad.undo.stl'));
+      const shown = stl.original;
+      doc.edit((model) => mergeLifted(model, shown, typed, blocks) ?? blocks, t('lad.undo.stl'));
+      setStl((current) => (current ? { ...current, original: typed, problems: [] } : current));
       return true;
     } catch (caught) {
-      setStl({ ...stl, error: asApiError(caught) });
+      setStl((current) => (current ? { ...current, problems: [], error: asApiError(caught) } : current));
       return false;
     } finally {
       setBusy(false);
     }
   }, [stl, setStl, doc, tab.name, t]);
 
+  // What is typed in the STL view goes back to the file after a pause: nothing waits for the view to be left.
+  const applyRef = useRef(applyStl);
+  applyRef.current = applyStl;
+  useEffect(() => {
+    if (!stl || stl.text === stl.original) return;
+    const timer = setTimeout(() => void applyRef.current(), STL_APPLY_MS);
+    return () => clearTimeout(timer);
+  }, [stl]);
+
   const choose = useCallback(
     async (next: DiagramView) => {
       if (next === view || busy) return;
-      if (view === 'STL' && !(await leaveStl())) return;
+      if (view === 'STL' && !(await applyStl())) return;
       if ((next === 'LAD' || next === 'FBD') && doc.state.status === 'ready') {
         doc.edit((blocks) => setLanguage(blocks, next), t(next === 'FBD' ? 'lad.undo.toFbd' : 'lad.undo.toLad'));
       }
@@ -195,7 +220,7 @@ export function LadSourceViews({ tab, active, monitoring, onMonitorProblem, text
       setViewState(next);
       onViewChange?.(next);
     },
-    [view, busy, leaveStl, doc, t, setStl, tab.id, onViewChange],
+    [view, busy, applyStl, doc, t, setStl, tab.id, onViewChange],
   );
 
   useEffect(() => onViewChange?.(view), [view, onViewChange]);
@@ -227,15 +252,37 @@ export function LadSourceViews({ tab, active, monitoring, onMonitorProblem, text
           {stl === null ? (
             <p className="diagram-views__loading">{t('lad.views.converting')}</p>
           ) : stl.error ? (
-            <CannotDraw problems={[]} error={stl.error} onText={() => void choose('text')} onRetry={() => setStl(null)} />
+            <CannotDraw problems={[]} error={stl.error} onText={() => void choose('text')} onRetry={retryStl} />
           ) : (
-            <CodeEditor value={stl.text} language="stl" onChange={(text) => setStl({ ...stl, text })} ariaLabel={t('lad.views.stlLabel', { name: tab.name })} className="source-view__editor" data-testid="stl-view-editor" />
+            <>
+              {stl.problems.length > 0 ? <StlProblems problems={stl.problems} /> : null}
+              <CodeEditor value={stl.text} language="stl" onChange={(text) => setStl((current) => (current ? { ...current, text } : current))} ariaLabel={t('lad.views.stlLabel', { name: tab.name })} className="source-view__editor" data-testid="stl-view-editor" />
+            </>
           )}
         </div>
       ) : null}
       <div className="diagram-views__content" hidden={view !== 'text'}>
         {textShown || view === 'text' ? textEditor : null}
       </div>
+    </div>
+  );
+}
+
+/** Why the typed STL does not go back to the blocks yet: its syntax errors, with their lines. */
+function StlProblems({ problems }: { problems: readonly Diagnostic[] }) {
+  const { t } = useTranslation();
+  const message = useDiagnosticMessage();
+  const { dir, language } = useUiLanguage();
+  return (
+    <div className="stl-problems" role="alert" dir={dir} lang={language} data-testid="lad-stl-problems">
+      <p>{t('lad.views.stlProblems')}</p>
+      <ul className="cannot-draw__list">
+        {problems.slice(0, 10).map((problem, k) => (
+          <li key={k}>
+            <code className="error-code">{problem.code}</code> <span dir="ltr">{problem.span?.line ? t('lad.cannot.line', { line: problem.span.line }) : null}</span> {message(problem)}
+          </li>
+        ))}
+      </ul>
     </div>
   );
 }
