@@ -176,9 +176,12 @@ export function estimatedHeight(network: Network): number {
   return Math.max(60, ...perLayer.values()) + 28;
 }
 
-/** The height of a network's FBD body: laid out, or estimated until then. */
+/**
+ * The height of a network's FBD body: laid out, or estimated until then. It starts no layout: a
+ * network is laid out when it is drawn, so a long block does not queue every network at once.
+ */
 export function fbdBodyHeight(network: Network): number {
-  const geometry = fbdGeometryOf(network);
+  const geometry = geometries.get(network);
   return (geometry ? geometry.height : estimatedHeight(network)) + 12;
 }
 
