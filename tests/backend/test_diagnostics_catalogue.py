@@ -37,13 +37,21 @@ def test_unknown_code_is_a_programming_error() -> None:
         render("XYZ999")
 
 
-LOCALES = Path(__file__).resolve().parents[2] / "frontend" / "src" / "i18n" / "locales"
+FRONTEND = Path(__file__).resolve().parents[2] / "frontend" / "src"
+
+
+def _problems(language: str) -> dict[str, str]:
+    """``problems.*`` of the main catalogue and of every feature's own (``<feature>/locales``)."""
+    found: dict[str, str] = {}
+    for path in sorted(FRONTEND.glob(f"*/locales/{language}.json")):
+        found.update(json.loads(path.read_text("utf-8")).get("problems", {}))
+    return found
 
 
 @pytest.mark.parametrize("language", ["en", "ar", "fa", "vi"])
 def test_every_code_is_translated_in_the_front_end(language: str) -> None:
     """The UI shows problems by key; a key missing from a catalogue would show raw English."""
-    problems = json.loads((LOCALES / f"{language}.json").read_text("utf-8"))["problems"]
+    problems = _problems(language)
     for found in all_entries():
         assert found.key in problems, f"{language}: problems.{found.key} ({found.code}) is missing"
         ours = {name for _, name, _, _ in string.Formatter().parse(found.template) if name}

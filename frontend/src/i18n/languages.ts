@@ -6,6 +6,30 @@ import ladAr from '../lad/locales/ar.json';
 import ladEn from '../lad/locales/en.json';
 import ladFa from '../lad/locales/fa.json';
 import ladVi from '../lad/locales/vi.json';
+import cpuEn from '../cpu/locales/en.json';
+import cpuAr from '../cpu/locales/ar.json';
+import cpuFa from '../cpu/locales/fa.json';
+import cpuVi from '../cpu/locales/vi.json';
+import watchTablesEn from '../watchtables/locales/en.json';
+import watchTablesAr from '../watchtables/locales/ar.json';
+import watchTablesFa from '../watchtables/locales/fa.json';
+import watchTablesVi from '../watchtables/locales/vi.json';
+import ioEn from '../io/locales/en.json';
+import ioAr from '../io/locales/ar.json';
+import ioFa from '../io/locales/fa.json';
+import ioVi from '../io/locales/vi.json';
+import xrefEn from '../xref/locales/en.json';
+import xrefAr from '../xref/locales/ar.json';
+import xrefFa from '../xref/locales/fa.json';
+import xrefVi from '../xref/locales/vi.json';
+import cpuPropsEn from '../cpuprops/locales/en.json';
+import cpuPropsAr from '../cpuprops/locales/ar.json';
+import cpuPropsFa from '../cpuprops/locales/fa.json';
+import cpuPropsVi from '../cpuprops/locales/vi.json';
+import panelsEn from '../panels/locales/en.json';
+import panelsAr from '../panels/locales/ar.json';
+import panelsFa from '../panels/locales/fa.json';
+import panelsVi from '../panels/locales/vi.json';
 
 /** The interface languages, in the order the language switch lists them. */
 export const LANGUAGES = ['en', 'ar', 'fa', 'vi'] as const;
@@ -17,17 +41,53 @@ export const DEFAULT_LANGUAGE: Language = 'en';
 /** Where the user's choice is remembered. */
 export const LANGUAGE_STORAGE_KEY = 'nasaq.lang';
 
-export type Catalogue = typeof en & { lad: typeof ladEn };
+/**
+ * A feature's texts that live beside its code (`<feature>/locales/<lang>.json`): each file holds
+ * its own top-level namespace and may add `problems.<key>` texts for the diagnostic codes it owns.
+ */
+const FEATURES = {
+  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn],
+  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr],
+  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa],
+  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi],
+} as const;
+
+export type Catalogue = typeof en & { lad: typeof ladEn } & typeof cpuEn &
+  typeof watchTablesEn &
+  typeof ioEn &
+  typeof xrefEn &
+  typeof cpuPropsEn &
+  typeof panelsEn;
+
+type Tree = { [key: string]: unknown };
+
+/** `base` with `extra` merged in; a key both define as text is a mistake, so it throws. */
+function mergeTree(base: Tree, extra: Tree, path = ''): Tree {
+  const out: Tree = { ...base };
+  for (const [key, value] of Object.entries(extra)) {
+    const where = path ? `${path}.${key}` : key;
+    const existing = out[key];
+    if (existing === undefined) out[key] = value;
+    else if (typeof existing === 'object' && existing !== null && typeof value === 'object' && value !== null)
+      out[key] = mergeTree(existing as Tree, value as Tree, where);
+    else throw new Error(`the text ${where} is defined twice`);
+  }
+  return out;
+}
+
+function catalogue(main: typeof en, lad: typeof ladEn, features: readonly Tree[]): Catalogue {
+  return features.reduce((tree, feature) => mergeTree(tree, feature), { ...main, lad } as Tree) as Catalogue;
+}
 
 /**
  * One catalogue per language; each one says its own name and writing direction. The diagram
- * editors' texts (`lad.*`) live beside them in `lad/locales/`.
+ * editors' texts (`lad.*`) live beside them in `lad/locales/`, other features' in theirs.
  */
 export const CATALOGUES: Record<Language, Catalogue> = {
-  en: { ...en, lad: ladEn },
-  ar: { ...ar, lad: ladAr },
-  fa: { ...fa, lad: ladFa },
-  vi: { ...vi, lad: ladVi },
+  en: catalogue(en, ladEn, FEATURES.en),
+  ar: catalogue(ar, ladAr, FEATURES.ar),
+  fa: catalogue(fa, ladFa, FEATURES.fa),
+  vi: catalogue(vi, ladVi, FEATURES.vi),
 };
 
 export function isLanguage(value: unknown): value is Language {
