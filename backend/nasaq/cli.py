@@ -106,7 +106,9 @@ def build_parser() -> argparse.ArgumentParser:
         "sources", nargs="+", metavar="SOURCE", help=".awl/.scl/.lad/.fbd sources, symbol tables"
     )
     run.add_argument("--cycles", type=int, default=1, help="scans of OB1 to run (after OB100)")
-    run.add_argument("--cycle-ms", type=float, default=10.0, help="virtual time per scan")
+    run.add_argument(
+        "--cycle-ms", type=float, help="virtual time per scan (default: cpu.properties, else 10)"
+    )
     run.add_argument(
         "--set",
         action="append",
@@ -121,7 +123,9 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument(
         "--test-ops", action="store_true", help="accept the __ASSERT== ... self-check operations"
     )
-    run.add_argument("--profile", choices=["S7-300", "S7-400"], default="S7-300")
+    run.add_argument(
+        "--profile", choices=["S7-300", "S7-400"], help="default: cpu.properties, else S7-300"
+    )
     run.add_argument(
         "--time",
         choices=["virtual", "real", "fast"],
@@ -131,8 +135,8 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument(
         "--restart",
         choices=["warm", "cold"],
-        default="warm",
-        help="startup: warm restart (OB100, the default) or cold restart (OB102)",
+        help="startup: warm restart (OB100) or cold restart (OB102); default: the startup of "
+        "cpu.properties, else warm",
     )
     run.add_argument(
         "--clock-memory",

@@ -1,6 +1,6 @@
 /** axe-core (bundled, run inside the page) finds no WCAG A/AA violation in any UI language. */
 import AxeBuilder from '@axe-core/playwright';
-import { test, expect, chooseLanguage } from './fixtures';
+import { test, expect, chooseLanguage, newStartSource } from './fixtures';
 
 for (const code of ['en', 'fa', 'ar', 'vi'] as const) {
   test(`no accessibility violations in ${code}`, async ({ page }) => {
@@ -18,9 +18,7 @@ for (const code of ['en', 'fa', 'ar', 'vi'] as const) {
   test(`no accessibility violations with an STL source open in ${code}`, async ({ page }) => {
     await page.goto('/');
     await chooseLanguage(page, code);
-    await page.getByTestId('new-source-stl').click();
-    const editor = page.getByTestId('code-editor');
-    await expect(editor).toHaveAttribute('data-state', 'ready', { timeout: 15_000 });
+    const editor = await newStartSource(page, 'stl');
     // With the caret in the text and the word suggestions open.
     await editor.locator('.view-lines').click();
     await page.keyboard.type('A');

@@ -10,7 +10,17 @@ export interface PageWatch {
   failedRequests: string[];
 }
 
-export const test = base.extend<{ watch: PageWatch }>({
+export const test = base.extend<{ watch: PageWatch; freshSessions: void }>({
+  // Simulation sessions belong to projects and outlive the page (a reload reattaches), so each
+  // test ends by closing those it left running: the next one starts with no CPU running.
+  freshSessions: [
+    async ({ request }, use) => {
+      await use();
+      const running = (await (await request.get('/api/sessions')).json()) as Array<{ id: string }>;
+      for (const session of running) await request.delete(`/api/sessions/${session.id}`);
+    },
+    { auto: true },
+  ],
   watch: async ({ page, baseURL }, use) => {
     const origin = new URL(baseURL!).origin;
     const watch: PageWatch = { consoleErrors: [], foreignRequests: [], failedRequests: [] };
@@ -55,6 +65,32 @@ export async function expandProject(page: Page, name: string): Promise<number> {
 export async function openFile(page: Page, projectId: number, name: string): Promise<Locator> {
   await tree(page).getByTestId(`file-node-${projectId}-${name}`).dblclick();
   const editor = visibleEditor(page);
-  await expect(editor).toHaveAttribute('data-state', 'ready', { timeout: 15_000 });
+  await expect(editor).toHaveAttribute('data-state', 'ready', { timeout: 30_000 });
+  return editor;
+}
+
+let startProjects = 0;
+
+/**
+ * The Start page's "New STL/SCL source". With no project selected the user is asked for one and
+ * makes a new project (a fresh project gets the example program); with one selected, the source
+ * goes there at once. Waits for the editor.
+ */
+export async function newStartSource(page: Page, language: 'stl' | 'scl'): Promise<Locator> {
+  // Making a project (and a file) first takes its own time, on top of the test's own steps.
+  test.info().setTimeout(test.info().timeout + 30_000);
+  const tabs = page.locator('[data-testid^="editor-tab-source-"]');
+  const before = await tabs.count();
+  await page.getByTestId(`new-source-${language}`).click();
+  const pick = page.getByTestId('project-pick-dialog');
+  await expect.poll(async () => (await pick.isVisible()) || (await tabs.count()) > before).toBe(true);
+  if (await pick.isVisible()) {
+    await pick.getByTestId('project-pick-new').click();
+    startProjects += 1;
+    await page.getByTestId('project-name-input').fill(`Start ${language} ${Date.now()}-${startProjects}`);
+    await page.getByTestId('project-create-submit').click();
+  }
+  const editor = visibleEditor(page);
+  await expect(editor).toHaveAttribute('data-state', 'ready', { timeout: 30_000 });
   return editor;
 }

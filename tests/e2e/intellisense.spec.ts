@@ -4,7 +4,7 @@
  * (Persian, right to left), and Format Document for SCL.
  */
 import type { Locator, Page } from '@playwright/test';
-import { test, expect, chooseLanguage, visibleEditor, tree, expandProject, openFile } from './fixtures';
+import { test, expect, chooseLanguage, tree, expandProject, newStartSource, openFile } from './fixtures';
 
 type Monaco = typeof import('monaco-editor/editor/editor.api');
 type WithMonaco = Window & { monaco: Monaco };
@@ -93,9 +93,7 @@ test('hover help explains an STL instruction in Persian, right to left', async (
 
 test('Format Document indents an SCL text', async ({ page, watch }) => {
   await page.goto('/');
-  await page.getByTestId('new-source-scl').click();
-  const editor = visibleEditor(page);
-  await expect(editor).toHaveAttribute('data-state', 'ready', { timeout: 15_000 });
+  const editor = await newStartSource(page, 'scl');
   const messy = 'FUNCTION FC 5 : INT\nVAR_INPUT\nx : INT;\n      END_VAR\n BEGIN\nIF x > 0 THEN\nFC 5 := x; // positive\n      ELSE\nFC 5 := 0;\n END_IF;\n    END_FUNCTION\n';
   await page.evaluate((text) => {
     const monaco = (window as WithMonaco).monaco;

@@ -24,7 +24,7 @@ test('download the motor example, switch its inputs, watch, force and plot', asy
   await downloadMotorExample(page);
   await expect(page.getByTestId('cpu-status')).toHaveAttribute('data-mode', 'stop');
 
-  // The I/O panel: IB0..IB3 as switches, QB0..QB4 as lamps (the program uses QB4).
+  // The I/O panel: the bytes the program uses, IB0 as switches and QB4 as lamps.
   await openTab(page, 'io');
   const panel = page.getByTestId('io-panel');
   await expect(panel.getByRole('group', { name: 'QB4' })).toBeVisible();

@@ -9,6 +9,7 @@ import { describe, expect, it } from 'vitest';
 import { CLIENT_ERROR_CODES, asApiError } from '../../frontend/src/api/client';
 import openapi from '../../frontend/src/api/openapi.json';
 import type { ApiProblem, Diagnostic, Health, Project, ProjectCreate, Span } from '../../frontend/src/api/types';
+import type { SessionOut } from '../../frontend/src/api/sessions';
 
 type Fields<T> = Record<keyof Required<T>, true>;
 
@@ -33,6 +34,18 @@ const apiProblem: Fields<ApiProblem> = {
   span: true,
   location: true,
 };
+const sessionOut: Fields<SessionOut> = {
+  id: true,
+  blocks: true,
+  cpu: true,
+  clients: true,
+  websocket: true,
+  project_id: true,
+  project_name: true,
+  profile: true,
+  started_at: true,
+  age_seconds: true,
+};
 const diagnostic: Fields<Diagnostic> = { code: true, severity: true, key: true, message: true, params: true, span: true };
 
 const schemas = openapi.components.schemas as Record<string, { properties?: Record<string, unknown> }>;
@@ -46,6 +59,7 @@ describe('API types match the OpenAPI document', () => {
     ['ProjectCreate', projectCreate],
     ['Span', span],
     ['ApiProblem', apiProblem],
+    ['SessionOut', sessionOut],
   ])('%s', (schema, record) => {
     expect(propertiesOf(schema).length).toBeGreaterThan(0);
     expect(keys(record)).toEqual(propertiesOf(schema));

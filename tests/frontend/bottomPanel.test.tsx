@@ -28,11 +28,19 @@ function selectedTab() {
 }
 
 describe('bottom panel', () => {
-  it('is a tab list with Diagnostics, Watch table, Trend, I/O and Call stack, Diagnostics first', () => {
+  it('is a tab list with Diagnostics, Watch table, Trend, I/O, Call stack, Cross-references and Assignment list, Diagnostics first', () => {
     healthyServer();
     renderApp();
     expect(screen.getByRole('tablist', { name: 'Output panels' })).toBeTruthy();
-    expect(tabNames()).toEqual(['Diagnostics0Problems: 0', 'Watch table', 'Trend', 'I/O', 'Call stack']);
+    expect(tabNames()).toEqual([
+      'Diagnostics0Problems: 0',
+      'Watch table',
+      'Trend',
+      'I/O',
+      'Call stack',
+      'Cross-references',
+      'Assignment list',
+    ]);
     const tab = selectedTab()!;
     expect(tab.textContent).toContain('Diagnostics');
     const panel = document.getElementById(tab.getAttribute('aria-controls')!)!;
@@ -57,7 +65,7 @@ describe('bottom panel', () => {
   it('moves between tabs with the arrow keys, Home and End, with one tab stop', async () => {
     healthyServer();
     const { user } = renderApp();
-    const [diagnostics, watch, trend, io, debug] = screen.getAllByRole('tab');
+    const [diagnostics, watch, trend, io, debug, xref, assignments] = screen.getAllByRole('tab');
     expect([diagnostics, watch, trend, io, debug].map((tab) => tab!.tabIndex)).toEqual([0, -1, -1, -1, -1]);
 
     diagnostics!.focus();
@@ -72,14 +80,18 @@ describe('bottom panel', () => {
     await user.keyboard('{ArrowRight}');
     expect(document.activeElement).toBe(debug);
     await user.keyboard('{ArrowRight}');
+    expect(document.activeElement).toBe(xref);
+    await user.keyboard('{ArrowRight}');
+    expect(document.activeElement).toBe(assignments);
+    await user.keyboard('{ArrowRight}');
     expect(document.activeElement).toBe(diagnostics);
     await user.keyboard('{ArrowLeft}');
-    expect(document.activeElement).toBe(debug);
-    expect(debug!.getAttribute('aria-selected')).toBe('true');
+    expect(document.activeElement).toBe(assignments);
+    expect(assignments!.getAttribute('aria-selected')).toBe('true');
     await user.keyboard('{Home}');
     expect(document.activeElement).toBe(diagnostics);
     await user.keyboard('{End}');
-    expect(document.activeElement).toBe(debug);
+    expect(document.activeElement).toBe(assignments);
   });
 
   it('mirrors the arrow keys in a right-to-left language', async () => {

@@ -68,6 +68,8 @@ describe('translation catalogues', () => {
         'problems.invalid_request',
         'problems.mon_bad_value',
         'problems.mon_unknown_target',
+        'phrases.field_reason',
+        'phrases.not_constant',
         'problemWords.NOT',
         // The names of the three views of a block are the languages' standard abbreviations.
         'lad.views.LAD',

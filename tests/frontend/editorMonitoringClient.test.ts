@@ -122,17 +122,62 @@ describe('breakpoints in the monitoring client', () => {
     expect(sentOf('set_breakpoint')).toHaveLength(1);
     expect(sentOf('clear_breakpoint')).toHaveLength(0); // nothing of ours can be set yet
 
+    answer(last(), sentOf('set_breakpoint')[0]!.ref as number, { id: 4 });
+    await flush();
+    client.setBreakpoints([bp(17), bp(20)]);
+    answer(last(), sentOf('set_breakpoint')[1]!.ref as number, { id: 5 });
+    await flush();
+
     last().drop(1006);
+    // Line 20's breakpoint is removed while the connection is down.
+    client.setBreakpoints([bp(17)]);
     await new Promise((resolve) => setTimeout(resolve, 5));
     expect(sockets).toHaveLength(2);
     last().open();
     last().receive(hello());
-    // The session kept what the old socket set: all cleared first, then ours set again.
-    expect(last().sentTypes().filter((type) => type.endsWith('breakpoint'))).toEqual(['clear_breakpoint', 'set_breakpoint']);
-    expect(sentOf('clear_breakpoint')[0]!.id).toBeNull();
+    // The session kept what the old socket set: ours are set again (the server answers with the
+    // ids they have), nothing is cleared before the session says what it holds.
+    expect(last().sentTypes().filter((type) => type.endsWith('breakpoint'))).toEqual(['set_breakpoint']);
+    const state = sentOf('session_state')[0]!.ref as number;
+    answer(last(), state, {
+      breakpoints: [
+        { id: 4, location: { file: 'Scale.scl', line: 17 }, condition: null, block: 'FC1', file: 'Scale.scl' },
+        { id: 5, location: { file: 'Scale.scl', line: 20 }, condition: null, block: 'FC1', file: 'Scale.scl' },
+        { id: 8, location: { file: 'Other.scl', line: 3 }, condition: null, block: 'FC2', file: 'Other.scl' },
+      ],
+      trend: [],
+    });
+    await flush();
+    // The one removed offline was ours: cleared; another page's (id 8) stays.
+    expect(sentOf('clear_breakpoint').map((message) => message.id)).toEqual([5]);
 
     client.programReplaced();
     expect(sentOf('set_breakpoint')).toHaveLength(2);
+    client.close();
+  });
+
+  it('hands the breakpoints the session holds to the page that attaches, and its trend entries', async () => {
+    const seen: unknown[] = [];
+    const client = new MonitorClient({
+      url: 'ws://nasaq.test/api/sessions/s1/ws',
+      createSocket: (url) => {
+        const socket = new FakeSocket(url);
+        sockets.push(socket);
+        return socket;
+      },
+      onSessionState: (state) => seen.push(state),
+    });
+    client.connect();
+    last().open();
+    last().receive(hello());
+    const held = { id: 3, location: { block: 'OB 1', network: 2 }, condition: 'MW10 > 5', block: 'OB1', file: 'Main.lad' };
+    answer(last(), sentOf('session_state')[0]!.ref as number, { breakpoints: [held], trend: ['MW10', 'Q0.0'] });
+    await flush();
+    expect(seen).toEqual([{ breakpoints: [held], trend: ['MW10', 'Q0.0'] }]);
+    expect(client.getState().sessionTrend).toEqual(['MW10', 'Q0.0']);
+    // A page without trend entries of its own does not stop the trend the session records.
+    await client.setTrend([]);
+    expect(sentOf('trend')).toHaveLength(0);
     client.close();
   });
 });

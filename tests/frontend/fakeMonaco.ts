@@ -220,7 +220,8 @@ const monaco = {
     registerHoverProvider: (language: string, provider: Record<string, unknown>) => register('hover', language, provider),
   },
   MarkerSeverity: { Hint: 1, Info: 2, Warning: 4, Error: 8 },
-  KeyCode: { F12: 70, F9: 67 },
+  KeyMod: { CtrlCmd: 2048, Shift: 1024, Alt: 512 },
+  KeyCode: { F12: 70, F9: 67, F2: 60 },
   editor: {
     MouseTargetType,
     TrackedRangeStickiness: { AlwaysGrowsWhenTypingAtEdges: 0, NeverGrowsWhenTypingAtEdges: 1 },

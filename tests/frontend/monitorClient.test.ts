@@ -103,7 +103,8 @@ describe('MonitorClient', () => {
     last().receive(hello(7));
     expect(client.getState().connection).toBe('open');
     expect(client.getState().hello?.client).toBe(7);
-    expect(last().sentTypes()).toEqual(['subscribe_cpu']);
+    // The CPU state, and what the session keeps for a page that attaches (breakpoints, trend).
+    expect(last().sentTypes()).toEqual(['subscribe_cpu', 'session_state']);
     last().receive(frame({ seq: 4, cpu: cpuState({ mode: 'RUN', scans: 12 }) }));
     expect(client.getState().cpu?.mode).toBe('RUN');
     expect(client.getState().cpu?.scans).toBe(12);
@@ -199,7 +200,7 @@ describe('MonitorClient', () => {
     await Promise.resolve();
     expect(client.getState().connection).toBe('open');
     expect(client.getState().hello?.client).toBe(2);
-    expect(last().sentTypes().sort()).toEqual(['open_block', 'subscribe_cpu', 'trend', 'watch']);
+    expect(last().sentTypes().sort()).toEqual(['open_block', 'session_state', 'subscribe_cpu', 'trend', 'watch']);
     expect(last().sent.find((message) => message.type === 'watch')!.entries).toEqual(['MW10']);
 
     // A success resets the backoff.

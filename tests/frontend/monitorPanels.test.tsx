@@ -263,16 +263,23 @@ describe('CPU toolbar', () => {
 });
 
 describe('I/O panel', () => {
-  it('shows IB0..IB3 as switches and QB0..QB4 as lamps (QB4 is used), switches inputs and forces bits', async () => {
+  it('shows the bytes the program uses (IB0 switches, QB4 lamps, all on request), switches inputs and forces bits', async () => {
     server();
     const { user } = renderMonitor();
     await downloadAndConnect(user, cpuState({ mode: 'RUN' }));
     await user.click(screen.getByTestId('panel-tab-io'));
     await waitFor(() => expect(screen.getByRole('group', { name: 'QB4' })).toBeTruthy());
     expect(screen.queryByRole('group', { name: 'QB5' })).toBeNull();
-    expect(screen.getByRole('group', { name: 'IB3' })).toBeTruthy();
+    expect(screen.queryByRole('group', { name: 'IB3' })).toBeNull();
     await waitFor(() => expect(messages('watch').length).toBeGreaterThan(0));
-    expect(messages('watch').at(-1)!.entries).toEqual(['PIB0', 'PIB1', 'PIB2', 'PIB3', 'QB0', 'QB1', 'QB2', 'QB3', 'QB4']);
+    expect(messages('watch').at(-1)!.entries).toEqual(['PIB0', 'QB4']);
+    // The symbols stand beside their bits.
+    expect(screen.getByTestId('io-symbol-Q4.0').textContent).toBe('Motor');
+    await user.click(screen.getByTestId('io-show-all'));
+    expect(screen.getByRole('group', { name: 'IB3' })).toBeTruthy();
+    await waitFor(() =>
+      expect(messages('watch').at(-1)!.entries).toEqual(['PIB0', 'PIB1', 'PIB2', 'PIB3', 'QB0', 'QB1', 'QB2', 'QB3', 'QB4']),
+    );
 
     act(() =>
       socket().receive(

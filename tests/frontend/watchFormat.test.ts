@@ -1,16 +1,17 @@
-/** Display formats of the watch table, the values typed to modify, and the sources' symbols and I/O bytes. */
-import fs from 'node:fs';
-import path from 'node:path';
+/** Display formats of the watch table, the values typed to modify, and the sources' symbols. */
 import { describe, expect, it } from 'vitest';
+import { normaliseAddress, parseSymbolTable } from '../../frontend/src/cpu/projectSymbols';
 import {
-  normaliseAddress,
-  parseSymbolTable,
-  shownIoBytes,
-  usedIoBytes,
-} from '../../frontend/src/cpu/projectSymbols';
-import {
+  countOfWord,
   defaultFormat,
+  formatS5Time,
   formatTime,
+  modifyValueFor,
+  parseCount,
+  parseS5Time,
+  s5TimeOfWord,
+  wordOfCount,
+  wordOfS5Time,
   formatValue,
   formatsFor,
   numericValue,
@@ -23,15 +24,20 @@ describe('watch display formats', () => {
     expect(formatsFor('BYTE')).toEqual(['bin', 'hex', 'dec', 'char']);
     expect(formatsFor('DWORD')).toEqual(['bin', 'hex', 'dec', 'real', 'char', 'time']);
     expect(formatsFor('local')).toEqual([]);
-    expect(['BOOL', 'WORD', 'INT', 'REAL', 'CHAR', 'TIME', 'S5TIME'].map(defaultFormat)).toEqual([
+    expect(['BOOL', 'WORD', 'INT', 'REAL', 'CHAR', 'TIME', 'S5TIME', 'TIMER', 'COUNTER'].map(defaultFormat)).toEqual([
       'bool',
       'hex',
       'dec',
       'real',
       'char',
       'time',
-      'time',
+      's5time',
+      's5time',
+      'counter',
     ]);
+    expect(formatsFor('WORD')).toEqual(['bin', 'hex', 'dec', 'char', 's5time', 'counter']);
+    expect(formatsFor('TIMER')).toEqual(['s5time', 'dec']);
+    expect(formatsFor('COUNTER')).toEqual(['counter', 'dec']);
   });
 
   it('shows integers in binary, hex, decimal and as characters, by width', () => {
@@ -55,7 +61,7 @@ describe('watch display formats', () => {
     expect(formatValue('A', 'CHAR', 'hex')).toBe('B#16#41');
     expect(formatValue(90_500, 'TIME', 'time')).toBe('T#1M_30S_500MS');
     expect(formatValue(-500, 'TIME', 'time')).toBe('T#-500MS');
-    expect(formatValue(2000, 'S5TIME', 'time')).toBe('S5T#2S');
+    expect(formatValue(2000, 'S5TIME', 's5time')).toBe('S5T#2S');
     expect(formatValue(null, 'INT', 'dec')).toBe('');
     expect(formatTime(0)).toBe('T#0MS');
     expect(formatTime(90_061_001)).toBe('T#1D_1H_1M_1S_1MS');
@@ -72,10 +78,7 @@ describe('watch display formats', () => {
   });
 });
 
-describe('symbols and I/O bytes of the sources', () => {
-  const motor = path.resolve(__dirname, '../../examples/projects/motor-start-stop');
-  const read = (name: string) => ({ name, text: fs.readFileSync(path.join(motor, name), 'utf8') });
-
+describe('symbols of the sources', () => {
   it('reads the symbol table formats with either mnemonic set', () => {
     expect(parseSymbolTable('symbols.sdf', '"Motor","Q 4.0","BOOL","coil"\n')).toEqual([
       { name: 'Motor', address: 'Q4.0', type: 'BOOL', comment: 'coil' },
@@ -88,16 +91,51 @@ describe('symbols and I/O bytes of the sources', () => {
     expect(parseSymbolTable('OB1.awl', '"x","Q 4.0"')).toEqual([]);
     expect(['A 4.0', 'EB 1', 'PEW 256', 'mw 10'].map(normaliseAddress)).toEqual(['Q4.0', 'IB1', 'PIW256', 'MW10']);
   });
+});
 
-  it('finds the I/O bytes the program uses, the digital ones only', () => {
-    const used = usedIoBytes([read('OB1.awl'), read('symbols.sdf')]);
-    expect(used).toEqual({ inputs: [0], outputs: [4] });
-    expect(shownIoBytes(used)).toEqual({ inputs: [0, 1, 2, 3], outputs: [0, 1, 2, 3, 4] });
-    const german = { name: 'FC1.awl', text: 'U E 6.1\n= A 5.0\nL PEW 256\nT AW 8\nA I 0.0\nE001: NOP 0' };
-    expect(usedIoBytes([german])).toEqual({ inputs: [0, 6], outputs: [5, 8, 9] });
-    expect(usedIoBytes([{ name: 'FC2.scl', text: '%Q7.1 := %I12.0 AND x; y := 1.5E 3;' }])).toEqual({ inputs: [12], outputs: [7] });
-    const ladder = 'RUNG\n  Contact(I 3.0)\n  ContactNC("Stop")\n  Coil(Q 6.1)\nEND_RUNG';
-    expect(usedIoBytes([{ name: 'Latch.lad', text: ladder }])).toEqual({ inputs: [3], outputs: [6] });
-    expect(usedIoBytes([{ name: 'Gates.fbd', text: ladder }])).toEqual({ inputs: [3], outputs: [6] });
+describe('S5TIME and counters, as STEP 7 shows timer and counter words', () => {
+  it('shows a timer as S5T# and a counter as C#', () => {
+    expect(formatValue(1850, 'TIMER', 's5time')).toBe('S5T#1S850MS');
+    expect(formatValue(0, 'TIMER', 's5time')).toBe('S5T#0MS');
+    expect(formatValue(9_990_000, 'TIMER', 's5time')).toBe('S5T#2H46M30S');
+    expect(formatValue(1850, 'TIMER', 'dec')).toBe('1850');
+    expect(formatValue(5, 'COUNTER', 'counter')).toBe('C#5');
+    expect(formatValue(999, 'COUNTER', 'dec')).toBe('999');
+    expect(formatS5Time(61_010)).toBe('S5T#1M1S10MS');
+  });
+
+  it('reads a timer word as time base and three BCD digits, a counter word as BCD', () => {
+    // base 00 (10 ms) x 185 = 1.85 s; base 10 (1 s) x 123; base 11 (10 s) x 999
+    expect(formatValue(0x0185, 'WORD', 's5time')).toBe('S5T#1S850MS');
+    expect(formatValue(0x2123, 'WORD', 's5time')).toBe('S5T#2M3S');
+    expect(formatValue(0x3999, 'WORD', 's5time')).toBe('S5T#2H46M30S');
+    expect(s5TimeOfWord(0x1010)).toBe(1000);
+    expect(formatValue(0x001a, 'WORD', 's5time')).toBe('W#16#001A'); // no BCD: shown raw
+    expect(formatValue(0x0025, 'WORD', 'counter')).toBe('C#25');
+    expect(formatValue(0x1025, 'WORD', 'counter')).toBe('W#16#1025');
+    expect(countOfWord(0x0999)).toBe(999);
+  });
+
+  it('parses modify values typed in those formats into the words the CPU stores', () => {
+    expect(parseS5Time('S5T#1S850MS')).toBe(1850);
+    expect(parseS5Time('s5time#1s_850ms')).toBe(1850);
+    expect(parseS5Time('S5T#2H46M30S')).toBe(9_990_000);
+    expect(parseS5Time('S5T#2H46M31S')).toBeNull(); // longer than 999 x 10 s
+    expect(parseS5Time('S5T#1X')).toBeNull();
+    expect(parseCount('C#5')).toBe(5);
+    expect(parseCount('C#1000')).toBeNull();
+    expect(wordOfS5Time(1850)).toBe(0x0185);
+    expect(wordOfS5Time(12_340)).toBe(0x1123); // 100 ms base: 12.3 s, the 40 ms dropped
+    expect(wordOfS5Time(9_990_000)).toBe(0x3999);
+    expect(wordOfCount(25)).toBe(0x0025);
+    expect(modifyValueFor('S5T#1S850MS', 'WORD', 's5time')).toBe(0x0185);
+    expect(modifyValueFor('C#25', 'WORD', 'counter')).toBe(0x0025);
+    expect(modifyValueFor('S5T#2S', 'S5TIME', 's5time')).toBe('S5T#2S'); // the server encodes it
+    expect(modifyValueFor('C#1000', 'WORD', 'counter')).toBeNull();
+    expect(modifyValueFor('S5T#9H', 'WORD', 's5time')).toBeNull();
+    expect(modifyValueFor('12', 'WORD', 'counter')).toBe(12);
+    for (const word of [0x0000, 0x0185, 0x1999, 0x2123, 0x3999]) { // each in its smallest base
+      expect(wordOfS5Time(parseS5Time(formatValue(word, 'WORD', 's5time'))!)).toBe(word);
+    }
   });
 });

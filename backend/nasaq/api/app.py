@@ -14,6 +14,8 @@ from nasaq import __version__
 from nasaq.api import (
     archive,
     convert,
+    cpu_properties,
+    examples,
     file_convert,
     files,
     health,
@@ -23,6 +25,7 @@ from nasaq.api import (
     sessions,
     symbols,
     workbench,
+    xref,
 )
 from nasaq.api.docs import install_docs
 from nasaq.api.errors import install_error_handlers
@@ -82,8 +85,11 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     api.include_router(symbols.router)
     api.include_router(outline.router)
     api.include_router(sessions.router)
+    api.include_router(cpu_properties.router)
     api.include_router(convert.router)
     api.include_router(lad.router)
+    api.include_router(xref.router)
+    api.include_router(examples.router)
     app.include_router(api)
     install_docs(app)
     install_frontend(app, settings.frontend_dist)  # last: its catch-all route must come after

@@ -19,6 +19,7 @@ from sqlalchemy.orm import Session, sessionmaker
 from nasaq.api.deps import DbSession
 from nasaq.api.errors import ApiError, ApiErrorBody
 from nasaq.api.projects import ProjectCreate, ProjectName, ProjectOut, found_project
+from nasaq.diagnostics.validation import validation_reason
 from nasaq.storage import files as file_store
 from nasaq.storage import projects as project_store
 from nasaq.storage.database import transaction
@@ -84,7 +85,7 @@ def _project_name(given: str | None, folder: str | None) -> str:
     try:
         return ProjectCreate(name=folder).name
     except ValidationError as exc:
-        reason = str(exc.errors()[0]["msg"]).removeprefix("Value error, ")
+        reason = validation_reason(exc.errors()[0])
         raise ApiError("API103", 422, ["query", "name"], field="name", reason=reason) from exc
 
 

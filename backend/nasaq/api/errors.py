@@ -16,6 +16,8 @@ from pydantic import BaseModel, Field
 from starlette.exceptions import HTTPException as StarletteHTTPException
 
 from nasaq.diagnostics import Diagnostic, render
+from nasaq.diagnostics.phrases import Phrase
+from nasaq.diagnostics.validation import validation_reason
 
 log = logging.getLogger(__name__)
 
@@ -60,7 +62,8 @@ def _http_error(request: Request, exc: Exception) -> JSONResponse:
         return error_response("API102", 405, method=request.method, path=request.url.path)
     if exc.status_code == 404:
         return error_response("API101", 404, path=request.url.path)
-    return error_response("API103", exc.status_code, field="request", reason=str(exc.detail))
+    reason = Phrase("request_refused", english=str(exc.detail))
+    return error_response("API103", exc.status_code, field="request", reason=reason)
 
 
 def _api_error(_request: Request, exc: Exception) -> JSONResponse:
@@ -73,8 +76,7 @@ def _validation_error(_request: Request, exc: Exception) -> JSONResponse:
     first = exc.errors()[0] if exc.errors() else {"loc": ["request"], "msg": "invalid"}
     location = [part for part in first.get("loc", ()) if isinstance(part, str | int)]
     field = ".".join(str(part) for part in location if part != "body") or "request"
-    reason = str(first.get("msg", "invalid")).removeprefix("Value error, ")
-    return error_response("API103", 422, location, field=field, reason=reason)
+    return error_response("API103", 422, location, field=field, reason=validation_reason(first))
 
 
 def _unexpected_error(request: Request, exc: Exception) -> JSONResponse:

@@ -11,6 +11,7 @@ from pydantic import AfterValidator, BaseModel, ConfigDict, Field
 
 from nasaq.api.deps import DbSession
 from nasaq.api.errors import ApiError, ApiErrorBody
+from nasaq.diagnostics.phrases import phrase
 from nasaq.storage import projects as store
 from nasaq.storage.models import Project
 
@@ -23,9 +24,9 @@ _FORBIDDEN = re.compile(r'[\x00-\x1f\x7f/\\:*?"<>|]')
 def _clean_name(value: str) -> str:
     value = value.strip()
     if not value:
-        raise ValueError("the name is empty")
+        raise ValueError(phrase("name_empty"))
     if _FORBIDDEN.search(value):
-        raise ValueError('the name may not contain control characters or / \\ : * ? " < > |')
+        raise ValueError(phrase("name_characters"))
     return value
 
 

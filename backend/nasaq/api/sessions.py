@@ -1,19 +1,35 @@
 """``/api/sessions``: simulation sessions (create by download, replace the program in STOP,
 diagnostic buffer, trend CSV, delete) and their monitoring WebSocket at ``/api/sessions/{id}/ws``
-(protocol: ``nasaq/monitor/PROTOCOL.md``)."""
+(protocol: ``nasaq/monitor/PROTOCOL.md``).
+
+A session made from a project belongs to that project, not to the browser tab that downloaded
+it: ``GET /api/sessions?project_id=N`` finds it again after a reload, in a second tab or another
+browser. A project runs one simulated CPU, as a project in TIA Portal has one PLCSIM instance: a
+new download into a new session closes the project's older ones. There are no user accounts yet
+(issue 22), so every session on the server counts as the user's own: the list, with each
+session's project name, CPU mode and age, is what the IDE offers to close when the server is full
+(MON610).
+"""
 
 from __future__ import annotations
 
+import asyncio
+import time
+from datetime import UTC, datetime
 from typing import Annotated, Any, Literal
 
 from fastapi import APIRouter, Query, Request, Response, WebSocket, status
 from pydantic import BaseModel, Field
 
+from nasaq.api.cpu_properties import checked as checked_properties
+from nasaq.api.cpu_properties import with_properties
 from nasaq.api.errors import ApiError, ApiErrorBody
 from nasaq.monitor.connection import Connection
 from nasaq.monitor.errors import MonitorError
 from nasaq.monitor.pool import WorkerPool
 from nasaq.monitor.protocol import CpuState, DiagnosticEntry, TimeModeName
+from nasaq.storage import projects as project_store
+from nasaq.storage.database import transaction
 
 router = APIRouter(prefix="/sessions", tags=["simulation"])
 
@@ -46,6 +62,13 @@ class SessionOut(BaseModel):
     cpu: CpuState
     clients: list[int] = Field(description="The connected sockets (their hello's client)")
     websocket: str
+    project_id: int | None = Field(
+        default=None, description="The project the session was made from (None: plain sources)"
+    )
+    project_name: str | None = Field(default=None, description="That project's name now")
+    profile: Literal["S7-300", "S7-400"] = "S7-300"
+    started_at: datetime = Field(description="When the session was created (UTC)")
+    age_seconds: float = Field(description="Seconds since it was created")
 
 
 class DownloadOut(BaseModel):
@@ -74,14 +97,38 @@ def _sources(items: list[Source]) -> list[tuple[str, str]]:
     return [(item.name, item.text) for item in items]
 
 
-def _out(found: dict[str, Any]) -> SessionOut:
+def _out(found: dict[str, Any], names: dict[int, str] | None = None) -> SessionOut:
+    project_id = found.get("project_id")
+    started = float(found.get("started_at", time.time()))
     return SessionOut(
         id=found["id"],
         blocks=found["blocks"],
         cpu=CpuState.model_validate(found["cpu"]),
         clients=found["clients"],
         websocket=f"/api/sessions/{found['id']}/ws",
+        project_id=project_id,
+        project_name=None if project_id is None or names is None else names.get(project_id),
+        profile=found.get("profile", "S7-300"),
+        started_at=datetime.fromtimestamp(started, UTC),
+        age_seconds=round(max(0.0, time.time() - started), 1),
     )
+
+
+def _names(request: Request, project_ids: set[int]) -> dict[int, str]:
+    """The current names of the projects (a project may have been renamed or deleted)."""
+    found: dict[int, str] = {}
+    with transaction(request.app.state.sessions) as db:
+        for project_id in project_ids:
+            project = project_store.get_project(db, project_id)
+            if project is not None:
+                found[project_id] = project.name
+    return found
+
+
+async def _described(request: Request, infos: list[dict[str, Any]]) -> list[SessionOut]:
+    wanted = {info["project_id"] for info in infos if info.get("project_id") is not None}
+    names = await asyncio.to_thread(_names, request, wanted) if wanted else {}
+    return [_out(info, names) for info in infos]
 
 
 @router.post(
@@ -96,16 +143,28 @@ async def create_session(body: SessionCreate, request: Request) -> SessionOut:
 
 
 async def start_session(
-    request: Request, sources: list[tuple[str, str]], options: SessionOptions
+    request: Request,
+    sources: list[tuple[str, str]],
+    options: SessionOptions,
+    project_id: int | None = None,
 ) -> SessionOut:
-    """Compiles ``sources`` into a new simulated CPU; also how a project starts a session."""
+    """Compiles ``sources`` into a new simulated CPU; also how a project starts a session (then
+    tagged with ``project_id``, and the project's older sessions are closed once it runs)."""
+    options = with_properties(sources, options)  # the sources' cpu.properties (PRJ908)
+    pool = pool_of(request.app.state)
+    older = pool.ids(project_id) if project_id is not None else []
     try:
-        found = await pool_of(request.app.state).create(
-            sources, options.profile, options.cycle_ms, options.time_mode
+        found = await pool.create(
+            sources, options.profile, options.cycle_ms, options.time_mode, project_id
         )
     except MonitorError as error:
         raise _api_error(error) from None
-    return _out(found)
+    for session_id in older:
+        try:
+            await pool.delete(session_id)
+        except MonitorError:
+            continue  # closed meanwhile
+    return (await _described(request, [found]))[0]
 
 
 async def _call(request: Request, session_id: str, op: str, *args: Any) -> Any:
@@ -115,20 +174,28 @@ async def _call(request: Request, session_id: str, op: str, *args: Any) -> Any:
         raise _api_error(error) from None
 
 
-@router.get("", response_model=list[SessionOut], summary="The running sessions")
-async def list_sessions(request: Request) -> list[SessionOut]:
-    found = []
-    for session_id in pool_of(request.app.state).ids():
+@router.get(
+    "",
+    response_model=list[SessionOut],
+    summary="The running sessions, newest first (project_id: only that project's)",
+)
+async def list_sessions(
+    request: Request, project_id: Annotated[int | None, Query(ge=1)] = None
+) -> list[SessionOut]:
+    pool = pool_of(request.app.state)
+    infos: list[dict[str, Any]] = []
+    for session_id in pool.ids(project_id):
         try:
-            found.append(_out(await pool_of(request.app.state).call(session_id, "info")))
+            infos.append(await pool.call(session_id, "info"))
         except MonitorError:
             continue  # closed meanwhile
-    return found
+    infos.sort(key=lambda info: float(info.get("started_at", 0)), reverse=True)
+    return await _described(request, infos)
 
 
 @router.get("/{session_id}", response_model=SessionOut, responses=_ERRORS, summary="One session")
 async def get_session(session_id: str, request: Request) -> SessionOut:
-    return _out(await _call(request, session_id, "info"))
+    return (await _described(request, [await _call(request, session_id, "info")]))[0]
 
 
 @router.put(
@@ -138,6 +205,7 @@ async def get_session(session_id: str, request: Request) -> SessionOut:
     summary="Download a changed program (CPU in STOP)",
 )
 async def download(session_id: str, body: Download, request: Request) -> DownloadOut:
+    checked_properties(_sources(body.sources))  # a cpu.properties with errors: PRJ908
     result = await _call(request, session_id, "download", _sources(body.sources))
     return DownloadOut.model_validate(result)
 

@@ -88,4 +88,4 @@ async def create_session(
     project_id: int, request: Request, body: SessionOptions | None = None
 ) -> SessionOut:
     sources = await _sources(request, project_id)
-    return await start_session(request, sources, body or SessionOptions())
+    return await start_session(request, sources, body or SessionOptions(), project_id)

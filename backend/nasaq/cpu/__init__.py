@@ -5,7 +5,7 @@ differences from a real CPU.
 """
 
 from nasaq.cpu.api import Cpu
-from nasaq.cpu.cycle import DiagnosticEntry
+from nasaq.cpu.cycle import DiagnosticEntry, Retentive
 from nasaq.cpu.profile import Profile
 
-__all__ = ["Cpu", "DiagnosticEntry", "Profile"]
+__all__ = ["Cpu", "DiagnosticEntry", "Profile", "Retentive"]

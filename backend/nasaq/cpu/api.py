@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from nasaq.cpu.codegen.test_ops import feature_profile
-from nasaq.cpu.cycle import DiagnosticEntry, Engine
+from nasaq.cpu.cycle import DiagnosticEntry, Engine, Retentive
 from nasaq.cpu.memory import read_bytes, write_bytes
 from nasaq.cpu.profile import Profile
 from nasaq.cpu.status_word import pack
@@ -27,10 +27,12 @@ class Cpu:
         watchdog_ms: int = 150,
         test_ops: bool = False,
         clock_memory_byte: int | None = None,
+        retentive: Retentive | None = None,
     ) -> None:
         """``clock_memory_byte``: the marker byte the CPU uses as clock memory (the CPU
-        properties' "clock memory" in STEP 7), or None for none; raises ValueError if the
-        profile has no such marker byte."""
+        properties' "clock memory" in STEP 7), or None for none; ``retentive``: the MB, T and C
+        ranges a warm restart keeps (default MB 0-15, no timers, C 0-7). Raises ValueError if the
+        profile has no such marker byte or fewer markers, timers or counters than retentive."""
         if test_ops:  # a self-checking test program may ask for 4 accumulators (__FEATURE 0, 4)
             profile = feature_profile(program, profile)
         if clock_memory_byte is not None and not 0 <= clock_memory_byte < profile.marker_bytes:
@@ -38,9 +40,23 @@ class Cpu:
                 f"clock memory MB {clock_memory_byte}: the {profile.value} has MB 0 to "
                 f"MB {profile.marker_bytes - 1}"
             )
+        kept = retentive or Retentive()
+        for what, count, limit in (
+            ("marker bytes", kept.markers, profile.marker_bytes),
+            ("timers", kept.timers, profile.timers),
+            ("counters", kept.counters, profile.counters),
+        ):
+            if not 0 <= count <= limit:
+                raise ValueError(f"retentive {what}: the {profile.value} has 0 to {limit}")
         self.profile = profile
         self._engine = Engine(
-            program, profile, cycle_ms, watchdog_ms, test_ops, clock_memory_byte=clock_memory_byte
+            program,
+            profile,
+            cycle_ms,
+            watchdog_ms,
+            test_ops,
+            clock_memory_byte=clock_memory_byte,
+            retentive=kept,
         )
 
     @property

@@ -71,6 +71,16 @@ class DiagnosticEntry:
     params: dict[str, str | int | float | bool | None] = field(default_factory=dict)
 
 
+@dataclass(frozen=True, slots=True)
+class Retentive:
+    """How many marker bytes, timers and counters from MB 0, T 0 and C 0 keep their values over
+    a warm restart (the "Retentive memory" tab of an S7-300's CPU properties; its defaults)."""
+
+    markers: int = RETENTIVE_MARKER_BYTES
+    timers: int = 0
+    counters: int = RETENTIVE_COUNTERS
+
+
 class Engine:
     def __init__(
         self,
@@ -80,8 +90,10 @@ class Engine:
         watchdog_ms: int,
         test_ops: bool,
         clock_memory_byte: int | None = None,
+        retentive: Retentive | None = None,
     ) -> None:
         self.program = program
+        self.retentive = retentive or Retentive()
         self.profile = profile
         self.cycle_ms = cycle_ms
         self.watchdog_ms = watchdog_ms
@@ -146,10 +158,11 @@ class Engine:
         mem.I[:] = bytes(len(mem.I))
         mem.Q[:] = bytes(len(mem.Q))
         mem.PQ[:] = bytes(len(mem.PQ))
-        kept_markers = 0 if cold else RETENTIVE_MARKER_BYTES
+        kept = Retentive(0, 0, 0) if cold else self.retentive
+        kept_markers = min(kept.markers, len(mem.M))
         mem.M[kept_markers:] = bytes(len(mem.M) - kept_markers)
-        self.timers.clear()
-        self.counters.clear(keep=0 if cold else RETENTIVE_COUNTERS)
+        self.timers.clear(keep=kept.timers)
+        self.counters.clear(keep=kept.counters)
         if cold:
             mem.reload_dbs()
         self.m.reset_registers()

@@ -14,6 +14,7 @@ from importlib import resources
 from typing import Any
 
 from nasaq.diagnostics.model import Diagnostic, Severity, Span
+from nasaq.diagnostics.phrases import expand
 
 
 @dataclass(frozen=True, slots=True)
@@ -51,8 +52,10 @@ def all_entries() -> list[CatalogueEntry]:
 
 
 def render(code: str, span: Span | None = None, **params: Any) -> Diagnostic:
-    """A diagnostic for ``code`` with its English message filled in from ``params``."""
+    """A diagnostic for ``code`` with its English message filled in from ``params``; phrase
+    parameters are expanded (see :mod:`nasaq.diagnostics.phrases`)."""
     found = entry(code)
+    params = expand(params)
     return Diagnostic(
         code=found.code,
         severity=found.severity,

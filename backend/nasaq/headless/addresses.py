@@ -11,6 +11,7 @@ import re
 import struct
 from dataclasses import dataclass
 
+from nasaq.diagnostics.phrases import Phrase, phrase
 from nasaq.ir import Area, Direct, Width
 
 _AREAS = {"I": Area.I, "E": Area.I, "Q": Area.Q, "A": Area.Q, "M": Area.M}
@@ -23,7 +24,12 @@ _COUNTER = re.compile(r"^[CZ]\s*(?P<n>\d+)$")
 
 
 class AddressError(ValueError):
-    """An address or value the user typed that Nasaq cannot read; the message says why."""
+    """An address or value the user typed that Nasaq cannot read; the message says why, and
+    ``phrase`` (when set) says it without the address, for the UI to translate."""
+
+    def __init__(self, message: str, phrase: Phrase | None = None) -> None:
+        super().__init__(message)
+        self.phrase = phrase
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,12 +49,15 @@ def _direct(area: Area, size: str, byte: str, bit: str | None, db: int | None, t
     width = _WIDTHS[size]
     if width is Width.BIT:
         if bit is None:
-            raise AddressError(f"{text}: a bit address needs a bit number, e.g. {text}.0")
+            reason = phrase("bit_needs_number", example=f"{text}.0")
+            raise AddressError(f"{text}: {reason}", reason)
         if int(bit) > 7:
-            raise AddressError(f"{text}: the bit number must be 0 to 7")
+            reason = phrase("bit_number_range")
+            raise AddressError(f"{text}: {reason}", reason)
         return Direct(area, width, int(byte), int(bit), db)
     if bit is not None:
-        raise AddressError(f"{text}: only bit addresses have a bit number")
+        reason = phrase("bit_only")
+        raise AddressError(f"{text}: {reason}", reason)
     return Direct(area, width, int(byte), 0, db)
 
 
@@ -61,13 +70,15 @@ def parse_address(text: str) -> Address:
     if match := _DB.match(cleaned):
         db = int(match["db"])
         if db == 0:
-            raise AddressError(f"{cleaned}: there is no DB 0")
+            reason = phrase("no_db_zero")
+            raise AddressError(f"{cleaned}: {reason}", reason)
         return _direct(Area.DB, match["size"], match["byte"], match["bit"], db, cleaned)
     if match := _TIMER.match(cleaned):
         return TimerAddress(int(match["n"]))
     if match := _COUNTER.match(cleaned):
         return CounterAddress(int(match["n"]))
-    raise AddressError(f"{text!r} is not an address (examples: I0.0, MW10, DB1.DBD4, T1, C2)")
+    reason = phrase("not_an_address", text=repr(text))
+    raise AddressError(str(reason), reason)
 
 
 def address_text(address: Direct) -> str:

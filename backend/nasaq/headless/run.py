@@ -5,6 +5,10 @@ The JSON object is a fixed contract that outside checks rely on: ``cycles``, ``t
 offset), ``T`` (running or set timers), ``C`` (nonzero counters), ``ACCU1``, ``ACCU2`` and ``STW``.
 Exit status: 0 when the scans ran (or the program stopped the CPU with SFC 46), 1 when the CPU went
 to STOP on an error, 2 when the sources do not compile.
+
+A ``cpu.properties`` among the sources or beside the first one (``nasaq.headless.project_file``)
+sets the profile, cycle time, cycle monitoring time, clock memory, retentive ranges and startup;
+the options named in ``RunOptions.explicit`` (those given on the command line) win over it.
 """
 
 from __future__ import annotations
@@ -13,14 +17,15 @@ import json
 import sys
 import traceback
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, TextIO
 
-from nasaq.cpu import Cpu, Profile
+from nasaq.cpu import Cpu, Profile, Retentive
 from nasaq.cpu.errors import sentence_part
 from nasaq.cpu.pacing import Pacer, TimeMode
 from nasaq.diagnostics import render
+from nasaq.headless import project_file
 from nasaq.headless.addresses import (
     AddressError,
     address_text,
@@ -57,6 +62,38 @@ class RunOptions:
     time_mode: TimeMode = TimeMode.VIRTUAL
     cold_restart: bool = False  # start with a cold restart (OB102) instead of a warm one (OB100)
     clock_memory: int | None = None  # the clock memory byte (MB n), None for none
+    watchdog_ms: int = 150  # the cycle monitoring time
+    retentive: Retentive | None = None  # None: MB 0-15, C 0-7
+    # Options the user gave (cycle_ms, profile, cold_restart, clock_memory): a cpu.properties
+    # file does not override them.
+    explicit: frozenset[str] = frozenset()
+
+
+def _with_project_file(options: RunOptions, err: TextIO) -> RunOptions | None:
+    """``options`` completed from the sources' cpu.properties; None (problems printed) if the
+    file has errors."""
+    try:
+        found = project_file.load(options.sources)
+    except SourceError as exc:
+        print(f"nasaq run: {exc}", file=err)
+        return None
+    if found is None:
+        return options
+    if not found.ok:
+        for line in project_file.problems(found):
+            print(line, file=err)
+        return None
+    props = found.properties
+    given = options.explicit
+    return replace(
+        options,
+        cycle_ms=options.cycle_ms if "cycle_ms" in given else props.cycle_ms,
+        profile=options.profile if "profile" in given else props.profile,
+        cold_restart=options.cold_restart if "cold_restart" in given else props.startup == "cold",
+        clock_memory=options.clock_memory if "clock_memory" in given else props.clock_memory,
+        watchdog_ms=props.cycle_monitoring_ms,
+        retentive=props.retentive,
+    )
 
 
 def parse_assignment(text: str, with_scan: bool = False) -> Assignment:
@@ -119,6 +156,10 @@ def snapshot(cpu: Cpu, cycles: int) -> dict[str, Any]:
 
 def execute(options: RunOptions, out: TextIO, err: TextIO) -> int:
     """Runs the whole command; returns the exit status."""
+    completed = _with_project_file(options, err)
+    if completed is None:
+        return 2
+    options = completed
     try:
         result = compile_files(options.sources, options.mnemonics, options.test_ops)
     except SourceError as exc:
@@ -150,6 +191,8 @@ def _simulate(options: RunOptions, program: Program, out: TextIO, err: TextIO) -
             cycle_ms=options.cycle_ms,
             test_ops=options.test_ops,
             clock_memory_byte=options.clock_memory,
+            watchdog_ms=options.watchdog_ms,
+            retentive=options.retentive,
         )
     except ValueError as exc:  # a clock memory byte the CPU does not have
         print(f"nasaq run: {exc}", file=err)
@@ -189,26 +232,30 @@ def main(options: RunOptions) -> int:
 def options_from_args(
     sources: Sequence[str],
     cycles: int,
-    cycle_ms: float,
+    cycle_ms: float | None,
     sets: Sequence[str],
     at: Sequence[str],
     mnemonics: str,
     test_ops: bool,
-    profile: str,
+    profile: str | None,
     time_mode: str = "virtual",
-    restart: str = "warm",
+    restart: str | None = None,
     clock_memory: str | None = None,
 ) -> RunOptions:
-    """Builds options from command-line strings; raises AddressError for a bad --set/--at."""
+    """Builds options from command-line strings (None: not given, the project file or the
+    default decides); raises AddressError for a bad --set/--at."""
+    given = {"cycle_ms": cycle_ms, "profile": profile, "cold_restart": restart}
+    given["clock_memory"] = clock_memory
     return RunOptions(
+        explicit=frozenset(name for name, value in given.items() if value is not None),
         sources=[Path(source) for source in sources],
         cycles=cycles,
-        cycle_ms=cycle_ms,
+        cycle_ms=10.0 if cycle_ms is None else cycle_ms,
         sets=[parse_assignment(text) for text in sets],
         at=[parse_assignment(text, with_scan=True) for text in at],
         mnemonics=mnemonics,
         test_ops=test_ops,
-        profile=Profile(profile),
+        profile=Profile(profile or "S7-300"),
         time_mode=TimeMode(time_mode),
         cold_restart=restart == "cold",
         clock_memory=None if clock_memory is None else parse_marker_byte(clock_memory),

@@ -8,6 +8,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
+from nasaq.diagnostics.phrases import phrase
 from nasaq.ir import Area, Block, BlockKind, Direct, Program, Variable
 from nasaq.monitor.errors import MonitorError
 from nasaq.monitor.protocol import Location
@@ -170,7 +171,7 @@ def write_slot(
     if slot.home == "P":
         buf, byte, bit = params[slot.bit_offset]
         if buf is None:
-            raise MonitorError("MON606", target=slot.name, reason="a block parameter is fixed")
+            raise MonitorError("MON606", target=slot.name, reason=phrase("param_fixed"))
         _write(buf, byte * 8 + bit, slot.bits, pattern)
         return
     buf = frame if slot.home == "L" else di
@@ -209,23 +210,29 @@ def breakpoint_indices(info: BlockInfo, location: Location) -> list[int]:
         if location.instruction >= len(code):
             raise MonitorError(
                 "MON604",
-                where=f"{info.name} instruction {location.instruction}",
-                hint=f" (the block has {len(code)})",
+                where=phrase(
+                    "where_instruction", block=info.name, instruction=location.instruction
+                ),
+                hint=phrase("hint_block_has", count=len(code)),
             )
         return [location.instruction]
     if location.network is not None:
         found = [k for k, net in enumerate(info.networks) if net == location.network]
         if not found:
-            raise MonitorError("MON604", where=f"{info.name} network {location.network}", hint="")
+            raise MonitorError(
+                "MON604",
+                where=phrase("where_network", block=info.name, network=location.network),
+                hint="",
+            )
         return [found[0]]
     line = location.line
     hits = [k for k, value in enumerate(info.lines) if value == line and info.statement_start[k]]
     if not hits:
         later = sorted({v for v in info.lines if v is not None and line is not None and v > line})
-        hint = f" (the next line with code is {later[0]})" if later else ""
+        hint = phrase("hint_next_line", line=later[0]) if later else ""
         raise MonitorError(
             "MON604",
-            where=f"{info.file or info.name} line {line}",
+            where=phrase("where_line", file=info.file or info.name, line=line),
             hint=hint,
             next_line=later[0] if later else None,
         )

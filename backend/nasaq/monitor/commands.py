@@ -38,6 +38,8 @@ def command(session: Session, client: int, message: Any) -> Callable[[], Any]:
             return open_block
         case p.Trend(entries=entries):
             return lambda: s.do_trend(client, entries)
+        case p.SessionState():
+            return s.do_session_state
         case p.Run():
             return s.do_run
         case p.Stop():

@@ -20,6 +20,7 @@ from typing import Any
 from pydantic import ValidationError
 from starlette.websockets import WebSocket, WebSocketDisconnect
 
+from nasaq.diagnostics.phrases import phrase
 from nasaq.monitor import protocol as p
 from nasaq.monitor.errors import MonitorError
 from nasaq.monitor.frames import merge
@@ -105,7 +106,7 @@ class Connection:
                 return
             text = message.get("text")
             if text is None:
-                self._error(None, MonitorError("MON601", reason="frames must be JSON text"))
+                self._error(None, MonitorError("MON601", reason=phrase("frames_json")))
                 continue
             size = len(text) if len(text) * 4 <= MAX_MESSAGE_BYTES else len(text.encode())
             if size > MAX_MESSAGE_BYTES:

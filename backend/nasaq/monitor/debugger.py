@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 from nasaq.cpu.codegen.compiler import Compiled
 from nasaq.cpu.errors import CpuStopError
+from nasaq.diagnostics.phrases import phrase
 from nasaq.ir import BlockKind
 from nasaq.monitor import targets
 from nasaq.monitor.block_info import BlockInfo, Slot, read_slot, write_slot
@@ -138,9 +139,7 @@ def parse_condition(text: str, session: Session, info: BlockInfo) -> Condition:
     ``#``) is that variable, else a register, an address or a symbol."""
     match = _CONDITION.match(text)
     if match is None:
-        raise MonitorError(
-            "MON612", condition=text, reason="write <operand> <comparison> <value>, e.g. MW10 > 5"
-        )
+        raise MonitorError("MON612", condition=text, reason=phrase("condition_form"))
     left, op, right = match.groups()
     try:
         value = float(right) if "." in right else float(int(right, 0))
@@ -148,7 +147,7 @@ def parse_condition(text: str, session: Session, info: BlockInfo) -> Condition:
         upper = right.upper()
         if upper not in ("TRUE", "FALSE"):
             raise MonitorError(
-                "MON612", condition=text, reason=f"{right} is not a number or TRUE/FALSE"
+                "MON612", condition=text, reason=phrase("condition_not_number", value=right)
             ) from None
         value = 1.0 if upper == "TRUE" else 0.0
     name = left.strip()
@@ -158,11 +157,15 @@ def parse_condition(text: str, session: Session, info: BlockInfo) -> Condition:
     if own in info.by_name:
         return Condition(text, f"local:{own}", None, _COMPARE[op], value)
     if name.startswith("#"):
-        raise MonitorError("MON612", condition=text, reason=f"{info.name} has no variable {name}")
+        raise MonitorError(
+            "MON612",
+            condition=text,
+            reason=phrase("condition_no_variable", block=info.name, name=name),
+        )
     try:
         target = targets.resolve(name, session.program)
     except targets.TargetError as error:
-        raise MonitorError("MON612", condition=text, reason=str(error)) from None
+        raise MonitorError("MON612", condition=text, reason=error.params["reason"]) from None
     return Condition(text, "target", target, _COMPARE[op], value)
 
 
@@ -199,8 +202,8 @@ class Debugger:
             if found is None:
                 raise MonitorError(
                     "MON607",
-                    action=f"Clearing breakpoint {k}",
-                    reason="there is no such breakpoint",
+                    action=phrase("act_clear_breakpoint", id=k),
+                    reason=phrase("no_such_breakpoint"),
                 )
             table = self.at.get(found.key, {})
             for index in found.indices:
@@ -321,7 +324,9 @@ def local_slot(held: HoldContext, name: str) -> Slot:
     if slot is None:
         known = ", ".join(s.name for s in held.info.slots[:12]) or "none"
         raise MonitorError(
-            "MON603", target=name, reason=f"{held.info.name} has no such variable (it has: {known})"
+            "MON603",
+            target=name,
+            reason=phrase("no_such_local", block=held.info.name, known=known),
         )
     return slot
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Any
 
 from nasaq.cpu import Cpu
+from nasaq.diagnostics.phrases import phrase
 from nasaq.ir import Area, BlockKind, Program
 from nasaq.lang.stl import SourceFile, compile_sources
 from nasaq.monitor.errors import MonitorError
@@ -24,11 +25,16 @@ def compile_download(sources: list[SourceFile]) -> Program:
         first = errors[0]
         where = f"{first.span.file}:{first.span.line}:{first.span.column}" if first.span else ""
         raise MonitorError(
-            "MON611", count=len(errors), first=f"{where} {first.code} {first.message}".strip()
+            "MON611",
+            count=len(errors),
+            first=f"{where} {first.code} {first.message}".strip(),
+            first_key=first.key,
+            first_params=first.params,
+            first_prefix=f"{where} {first.code}".strip(),
         )
     size = sum(len(b.data) for b in result.program.blocks.values())
     if size > MAX_DB_BYTES:
-        raise MonitorError("MON616", reason=f"{size} bytes of data blocks, at most {MAX_DB_BYTES}")
+        raise MonitorError("MON616", reason=phrase("db_too_large", size=size, limit=MAX_DB_BYTES))
     return result.program
 
 
@@ -36,7 +42,8 @@ def carry_over(old_program: Program, old: Cpu, program: Program, cpu: Cpu) -> li
     """Copies what a download keeps from ``old`` into ``cpu``; the blocks the download changed."""
     for area in (Area.M, Area.PI):
         fresh = cpu.engine.memory.area(area)
-        fresh[:] = old.engine.memory.area(area)[: len(fresh)]
+        kept = old.engine.memory.area(area)[: len(fresh)]  # a new profile may be smaller or larger
+        fresh[: len(kept)] = kept
     for number, data in old.engine.memory.dbs.items():
         new_block = program.get(BlockKind.DB, number)
         old_block = old_program.get(BlockKind.DB, number)

@@ -29,6 +29,7 @@ class FrameState:
         self.values: dict[str, p.WatchValue] = {}
         self.block_scan: int | None = None
         self.block_name: str | None = None
+        self.block_sent: p.BlockStatus | None = None
         self.hold: p.HoldState | None = None
         self.diagnostics = -1
 
@@ -51,10 +52,12 @@ class FrameState:
                 changed = True
         if view.open_block is not None:
             status = snap.blocks.get(view.open_block)
-            if status is not None and (status.scan, status.block) != (
-                self.block_scan,
-                self.block_name,
+            # A new status of the same scan (the values at a hold, after a modify) is sent too.
+            if status is not None and (
+                status is not self.block_sent
+                or (status.scan, status.block) != (self.block_scan, self.block_name)
             ):
+                self.block_sent = status
                 if view.open_networks is not None:  # another client may record more of it
                     status = narrowed(status, view.open_networks, session.info(view.open_block))
                 frame.block = status

@@ -2,8 +2,10 @@
 routing of its frames and answers to the sockets (``nasaq.monitor.worker`` is the other side).
 
 A session is pinned to the worker with the fewest sessions when it is created. One thread per
-worker reads what the worker sends and hands it to the event loop. Sessions nobody is connected to
-for ``idle_seconds`` are closed by ``reap``.
+worker reads what the worker sends and hands it to the event loop. A session made from a project
+is tagged with it (``project_of``, ``ids(project_id)``), so that a reloaded page, a second tab or
+another browser finds the project's running session and attaches to it. Sessions nobody has been
+connected to for ``idle_seconds`` (counted from the last client leaving) are closed by ``reap``.
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ from dataclasses import dataclass, field
 from multiprocessing.connection import Connection
 from typing import Any, Protocol
 
+from nasaq.diagnostics.phrases import phrase
 from nasaq.monitor.errors import MonitorError
 from nasaq.monitor.protocol import TimeModeName
 
@@ -57,6 +60,7 @@ class WorkerPool:
         self.idle_seconds = idle_seconds
         self._workers: list[_Worker] = []
         self._where: dict[str, _Worker] = {}
+        self._projects: dict[str, int | None] = {}  # session: the project it was made from
         self._clients: dict[tuple[str, int], Client] = {}
         self._requests: dict[int, tuple[asyncio.Future[Any], _Worker]] = {}
         self._ids = itertools.count(1)
@@ -117,6 +121,7 @@ class WorkerPool:
         profile: str = "S7-300",
         cycle_ms: float = 10,
         time_mode: TimeModeName = "virtual",
+        project_id: int | None = None,
     ) -> dict[str, Any]:
         if len(self._where) >= self.max_sessions:
             raise MonitorError("MON610", limit=self.max_sessions)
@@ -124,13 +129,15 @@ class WorkerPool:
         session_id = secrets.token_hex(8)
         worker.sessions.add(session_id)  # reserved while it compiles
         self._where[session_id] = worker
+        self._projects[session_id] = project_id
         try:
             found: dict[str, Any] = await self._request(
-                worker, "create", session_id, sources, profile, cycle_ms, time_mode
+                worker, "create", session_id, sources, profile, cycle_ms, time_mode, project_id
             )
         except BaseException:
             worker.sessions.discard(session_id)
             self._where.pop(session_id, None)
+            self._projects.pop(session_id, None)
             raise
         return found
 
@@ -140,8 +147,11 @@ class WorkerPool:
             raise MonitorError("MON609", id=session_id)
         return await self._request(worker, "call", session_id, op, args)
 
-    def ids(self) -> list[str]:
-        return list(self._where)
+    def ids(self, project_id: int | None = None) -> list[str]:
+        """Every session, or those made from project ``project_id``; oldest first."""
+        if project_id is None:
+            return list(self._where)
+        return [sid for sid in self._where if self._projects.get(sid) == project_id]
 
     def exists(self, session_id: str) -> bool:
         return session_id in self._where
@@ -161,6 +171,7 @@ class WorkerPool:
 
     def _forget(self, session_id: str) -> None:
         worker = self._where.pop(session_id, None)
+        self._projects.pop(session_id, None)
         if worker is not None:
             worker.sessions.discard(session_id)
 
@@ -174,7 +185,7 @@ class WorkerPool:
         count = sum(1 for sid, _ in self._clients if sid == session_id)
         if count >= MAX_CLIENTS:
             raise MonitorError(
-                "MON605", what="clients of this session", count=count + 1, limit=MAX_CLIENTS
+                "MON605", what=phrase("what_clients"), count=count + 1, limit=MAX_CLIENTS
             )
         number = next(self._client_ids)
         self._clients[(session_id, number)] = client

@@ -57,10 +57,19 @@ class OpenBlock(_Message):
 
 
 class Trend(_Message):
-    """Values sampled at the end of every scan, sent as batches of samples."""
+    """Values sampled at the end of every scan, sent as batches of samples. The same entries as
+    the session already records (another tab's, or a reloaded page's) start with the samples
+    recorded so far: the first frame carries that history."""
 
     type: Literal["trend"]
     entries: list[str] = Field(max_length=10_000)
+
+
+class SessionState(_Message):
+    """What the session keeps for whoever attaches (a reload, a second tab, another browser):
+    the ack lists its breakpoints and the entries of the trend it records."""
+
+    type: Literal["session_state"]
 
 
 # -- client -> server: commands -----------------------------------------------------------------
@@ -170,6 +179,7 @@ ClientMessage = Annotated[
     | Watch
     | OpenBlock
     | Trend
+    | SessionState
     | Run
     | Stop
     | Restart

@@ -8,6 +8,14 @@ command), and from it each client's frame with only what that client has not see
 the worker forwards to the server), plus per-client trend samples taken at the end of every scan.
 Nothing the thread does waits for a client.
 
+The session belongs to a project (``project_id``), not to a browser tab: clients come and go
+(a reload, a second tab) and find it all as they left it. The breakpoints stay set with the
+location a client gave (``session_state`` lists them for the next client), and the trend of a
+client that left goes on recording (``kept_trend``) so that the next client asking for the same
+entries gets its history. ``last_activity`` is when the session was made, its program replaced
+or its last client left; REST reads (info, the session list) do not count, so listing the
+sessions never keeps an abandoned one alive, and a reload never finds its session reaped.
+
 Time (``set_time``): ``virtual`` runs one scan per cycle of the wall clock and advances the
 simulated clock by exactly the cycle time (scans up to 100 ms late are made up, later ones are
 lost, as a real CPU's cycle grows); ``real`` also paces scans to the wall clock, and the
@@ -30,7 +38,8 @@ from typing import Any, TypeVar
 
 from nasaq.cpu import Cpu, Profile
 from nasaq.cpu.codegen.compiler import Compiled
-from nasaq.ir import BlockKind
+from nasaq.diagnostics.phrases import phrase
+from nasaq.ir import Area, BlockKind
 from nasaq.lang.stl import SourceFile
 from nasaq.monitor import targets, watch
 from nasaq.monitor.block_info import (
@@ -68,6 +77,7 @@ from nasaq.monitor.protocol import (
 )
 from nasaq.monitor.scheduler import Scheduler
 from nasaq.monitor.status import Recorder
+from nasaq.workbench.cpu_properties import CpuProperties, find, properties_of
 
 log = logging.getLogger(__name__)
 T = TypeVar("T")
@@ -93,6 +103,7 @@ class ClientView:
     open_block: Key | None = None
     open_networks: frozenset[int] | None = None  # the networks of it on screen; None: all
     trend: list[targets.Target] = field(default_factory=list)
+    trend_entries: list[str] = field(default_factory=list)  # as the client wrote them
     samples: deque[TrendSample] = field(default_factory=lambda: deque(maxlen=TREND_SAMPLES))
     history: deque[TrendSample] = field(default_factory=lambda: deque(maxlen=TREND_SAMPLES))
     state: FrameState = field(default_factory=FrameState)
@@ -117,18 +128,25 @@ class Session:
         cycle_ms: float = 10,
         time_mode: TimeModeName = "virtual",
         cpu_share: float = 0.5,
+        project_id: int | None = None,
     ) -> None:
         self.id = session_id
+        self.project_id = project_id
+        self.started_at = time.time()
         self.sources = list(sources)
         self.profile = profile
         self.program = compile_download(self.sources)
         self.lad = lad_blocks(self.sources, self.program)
-        self.cpu = Cpu(self.program, profile, cycle_ms)
+        # The project's cpu.properties (if any) sets the rest; the API resolved profile and cycle.
+        self.properties = properties_of(_pairs(self.sources)).properties
+        self.cpu = _cpu(self.program, self.properties, profile, cycle_ms)
         self.time_mode: TimeModeName = time_mode
         self._resume_mode: TimeModeName = "virtual" if time_mode == "pause" else time_mode
         self.cpu_share = cpu_share
         self.debugger = Debugger(self)
         self.clients: dict[int, ClientView] = {}
+        self.kept_trend: ClientView | None = None  # the trend of a client that left
+        self.breakpoint_places: dict[int, dict[str, Any]] = {}  # id: where a client set it
         self.snapshot: Snapshot | None = None
         self.held: HoldContext | None = None
         self.hold_view: HoldState | None = None
@@ -210,7 +228,6 @@ class Session:
         if self.closed:
             future.set_exception(MonitorError("MON614"))
             return future
-        self.last_activity = time.monotonic()
         with self._cond:
             self._commands.append((action, future))
             self._cond.notify_all()
@@ -247,7 +264,7 @@ class Session:
         if self.held is not None:
             self._resume = True
         elif self.cpu.mode != "RUN":
-            self._restart(cold=False)
+            self._restart(cold=self.properties.startup == "cold")  # the startup property
         elif self.time_mode == "pause":
             self.time_mode = self._resume_mode
 
@@ -284,7 +301,7 @@ class Session:
     def do_set_input(self, text: str, value: Value) -> None:
         target = self._memory_target(text)
         if target.direct is None or not targets.is_input(target):
-            raise MonitorError("MON603", target=text, reason="this is not an input (I, PI)")
+            raise MonitorError("MON603", target=text, reason=phrase("not_an_input"))
         self.cpu.set_input(target.direct, targets.encode(target, value))
 
     def do_modify(self, text: str, value: Value) -> None:
@@ -292,22 +309,25 @@ class Session:
             if self.held is None:
                 raise MonitorError(
                     "MON607",
-                    action=f"Modifying {text}",
-                    reason="locals exist only while the CPU holds",
+                    action=phrase("act_modify", target=text),
+                    reason=phrase("locals_only_holding"),
                 )
             modify_local(self.held, text, value)
             self._refresh_hold()
             return
-        targets.write(self._memory_target(text), self.cpu, value)
+        target = self._memory_target(text)
+        targets.write(target, self.cpu, value)
+        if target.direct is not None and target.direct.area is Area.I:
+            # As in PLCSIM, the simulated input module is the source of the inputs: a modified
+            # input holds there until changed, instead of being lost at the next PII update.
+            self.cpu.set_input(target.direct, targets.encode(target, value))
         if self.held is not None:
             self._refresh_hold()
 
     def do_force(self, text: str, value: Value) -> None:
         target = self._memory_target(text)
         if target.direct is None or not (targets.is_input(target) or targets.is_output(target)):
-            raise MonitorError(
-                "MON603", target=text, reason="only inputs and outputs (I, Q) can be forced"
-            )
+            raise MonitorError("MON603", target=text, reason=phrase("force_only_io"))
         self.cpu.force(target.direct, targets.encode(target, value))
 
     def do_unforce(self, text: str | None) -> None:
@@ -316,10 +336,20 @@ class Session:
             return
         target = self._memory_target(text)
         if target.direct is None or not (targets.is_input(target) or targets.is_output(target)):
-            raise MonitorError("MON603", target=text, reason="only inputs and outputs are forced")
+            raise MonitorError("MON603", target=text, reason=phrase("unforce_only_io"))
         self.cpu.unforce(target.direct)
 
     def do_set_breakpoint(self, location: Location, condition: str | None) -> dict[str, object]:
+        """Sets a breakpoint; the same place and condition again (a reloaded page, a second tab
+        setting the project's breakpoints) answers the breakpoint already there."""
+        where_given = location.model_dump(exclude_none=True)
+        for number, place in self.breakpoint_places.items():
+            if (
+                place["location"] == where_given
+                and place["condition"] == (condition or None)
+                and number in self.debugger.breakpoints
+            ):
+                return {key: place[key] for key in ("id", "block", "instructions", "where")}
         info, indices = self._locate(location)
         parsed = parse_condition(condition, self, info) if condition else None
         where = (
@@ -330,10 +360,42 @@ class Session:
             else f"{info.name} instruction {location.instruction}"
         )
         number = self.debugger.add((info.block.kind, info.block.number), indices, parsed, where)
+        self.breakpoint_places[number] = {
+            "id": number,
+            "location": where_given,
+            "condition": condition or None,
+            "block": info.name,
+            "instructions": indices,
+            "file": info.file,
+            "where": where,
+        }
         return {"id": number, "block": info.name, "instructions": indices, "where": where}
 
     def do_clear_breakpoint(self, number: int | None) -> None:
         self.debugger.remove(number)
+        if number is None:
+            self.breakpoint_places.clear()
+        else:
+            self.breakpoint_places.pop(number, None)
+
+    def do_session_state(self) -> dict[str, object]:
+        """The breakpoints set (as their clients gave them) and the trend the session records
+        (a connected client's, else the one a client left behind): what a client that attaches
+        shows again."""
+        alive = self.debugger.breakpoints
+        places = [place for number, place in self.breakpoint_places.items() if number in alive]
+        recorded = [v.trend_entries for v in list(self.clients.values()) if v.trend_entries]
+        kept = self.kept_trend
+        trend = recorded[-1] if recorded else kept.trend_entries if kept is not None else []
+        return {"breakpoints": places, "trend": list(trend)}
+
+    def client_left(self, view: ClientView) -> None:
+        """A client detached (called by the worker): the idle time counts from now, and its
+        trend goes on recording for the next client (a reload) that asks for it."""
+        self.last_activity = time.monotonic()
+        if view.trend:
+            view.samples.clear()
+            self.kept_trend = view
 
     def do_continue(self) -> None:
         if self.held is not None:
@@ -343,12 +405,12 @@ class Session:
             self.time_mode = self._resume_mode
             return
         raise MonitorError(
-            "MON607", action="Continue", reason="the CPU neither holds nor is paused"
+            "MON607", action=phrase("act_continue"), reason=phrase("cpu_not_holding")
         )
 
     def do_step(self, by: StepKind, into: bool) -> None:
         if self.cpu.mode != "RUN":
-            raise MonitorError("MON607", action="A single step", reason="the CPU is in STOP")
+            raise MonitorError("MON607", action=phrase("act_step"), reason=phrase("cpu_in_stop"))
         if by == "scan":
             if self.held is not None:
                 self._pause_after_scan = True
@@ -369,8 +431,8 @@ class Session:
         if self.cpu.mode != "RUN" or self.held is not None:
             raise MonitorError(
                 "MON607",
-                action=f"Running {count} scans",
-                reason="the CPU must be in RUN, not holding",
+                action=phrase("act_run_scans", count=count),
+                reason=phrase("cpu_must_run"),
             )
         if self.time_mode != "pause":
             self._resume_mode = self.time_mode
@@ -381,9 +443,16 @@ class Session:
         """Replaces the program in STOP; memory and the data blocks whose layout is unchanged
         keep their values (new and changed DBs get their initial values)."""
         if self.cpu.mode != "STOP":
-            raise MonitorError("MON607", action="A download", reason="switch the CPU to STOP first")
+            raise MonitorError(
+                "MON607", action=phrase("act_download"), reason=phrase("switch_to_stop")
+            )
         program = compile_download(sources)
-        cpu = Cpu(program, self.profile, self.cpu.cycle_ms)
+        cycle_ms, properties = self.cpu.cycle_ms, self.properties
+        if find(_pairs(sources)) is not None:  # a download carries the CPU properties too
+            properties = properties_of(_pairs(sources)).properties
+            self.profile, cycle_ms = properties.profile, properties.cycle_ms
+        cpu = _cpu(program, properties, self.profile, cycle_ms)
+        self.properties = properties
         changed = carry_over(self.program, self.cpu, program, cpu)
         self.sources = list(sources)
         self.program = program
@@ -394,6 +463,9 @@ class Session:
         self._block_status.clear()
         self._debug_keys = frozenset()
         self.debugger = Debugger(self)
+        self.last_activity = time.monotonic()
+        self.breakpoint_places.clear()
+        self.kept_trend = None
         return {"changed": changed}
 
     def view(self, client: int) -> ClientView:
@@ -404,7 +476,9 @@ class Session:
 
     def do_watch(self, client: int, entries: list[str]) -> dict[str, object]:
         if len(entries) > MAX_WATCH:
-            raise MonitorError("MON605", what="watch", count=len(entries), limit=MAX_WATCH)
+            raise MonitorError(
+                "MON605", what=phrase("what_watch"), count=len(entries), limit=MAX_WATCH
+            )
         resolved, report = watch.resolve_entries(entries, self.program, self.cpu)
         view = self.view(client)
         view.watch = list(entries)
@@ -413,13 +487,33 @@ class Session:
 
     def do_trend(self, client: int, entries: list[str]) -> dict[str, object]:
         if len(entries) > MAX_TREND:
-            raise MonitorError("MON605", what="trend", count=len(entries), limit=MAX_TREND)
+            raise MonitorError(
+                "MON605", what=phrase("what_trend"), count=len(entries), limit=MAX_TREND
+            )
         chosen = [self._memory_target(text) for text in entries]
         view = self.view(client)
+        donor = self._trend_donor(client, entries)
         view.trend = chosen
+        view.trend_entries = list(entries)
         view.samples.clear()
         view.history.clear()
+        if donor is not None:  # the same entries are recorded already: start with their history
+            view.history.extend(donor.history)
+            view.samples.extend(donor.history)
+        if self.kept_trend is donor or not entries:
+            self.kept_trend = None
         return {"entries": [{"entry": t.text, "type": t.type} for t in chosen]}
+
+    def _trend_donor(self, client: int, entries: list[str]) -> ClientView | None:
+        if not entries:
+            return None
+        kept = self.kept_trend
+        if kept is not None and kept.trend_entries == entries:
+            return kept
+        for number, other in list(self.clients.items()):
+            if number != client and other.trend_entries == entries:
+                return other
+        return None
 
     def do_open_block(
         self, client: int, name: str | None, networks: list[int] | None = None
@@ -453,12 +547,10 @@ class Session:
         if location.block is not None:
             info = self.info(parse_block_name(location.block, self.program))
             if location.line is None and location.network is None and location.instruction is None:
-                raise MonitorError(
-                    "MON604", where=info.name, hint=" (give a line, network or instruction)"
-                )
+                raise MonitorError("MON604", where=info.name, hint=phrase("hint_give_place"))
             return info, breakpoint_indices(info, location)
         if location.file is None or location.line is None:
-            raise MonitorError("MON604", where="?", hint=" (give a block, or a file and a line)")
+            raise MonitorError("MON604", where="?", hint=phrase("hint_give_block"))
         wanted = _base_name(location.file)
         line = location.line
         later: list[int] = []
@@ -471,11 +563,11 @@ class Session:
             if any(v == line for v in info.lines):
                 return info, breakpoint_indices(info, location)
             later += [v for v in info.lines if v is not None and v > line]
-        hint = f" (the next line with code is {min(later)})" if later else ""
+        hint = phrase("hint_next_line", line=min(later)) if later else ""
         # next_line: so that a client can offer to move the breakpoint there.
         raise MonitorError(
             "MON604",
-            where=f"{location.file} line {line}",
+            where=phrase("where_line", file=location.file, line=line),
             hint=hint,
             next_line=min(later) if later else None,
         )
@@ -561,6 +653,12 @@ class Session:
             return
         stack = call_stack(held, self.engine.loader.by_filename, self._info_of)
         self.hold_view = hold_state(held, stack)
+        key = (held.compiled.block.kind, held.compiled.block.number)
+        if any(v.open_block == key for v in list(self.clients.values())):
+            # The open block's lines show the values at the hold, as the Locals do.
+            recorder = self._recorder(key)
+            status = recorder.at_hold(held.frame, held.params, held.regs, self.engine.scans)
+            self._block_status[key] = status
         self._publish(force=True)
 
     # -- the CPU thread --------------------------------------------------------------------------
@@ -725,7 +823,10 @@ class Session:
 
     def _sample_trends(self) -> None:
         cpu = self.cpu
-        for view in list(self.clients.values()):
+        views = list(self.clients.values())
+        if self.kept_trend is not None:
+            views.append(self.kept_trend)
+        for view in views:
             if view.trend:
                 values = [watch.read_or_none(t, cpu) for t in view.trend]
                 sample = TrendSample(scan=cpu.scans, time_ms=cpu.time_ms, values=values)
@@ -801,3 +902,15 @@ class Session:
 
 def _base_name(path: str) -> str:
     return path.replace("\\", "/").rsplit("/", 1)[-1].casefold()
+
+
+def _pairs(sources: list[SourceFile]) -> list[tuple[str, str]]:
+    return [(f.name, f.text if isinstance(f.text, str) else f.text.decode()) for f in sources]
+
+
+def _cpu(program: Any, properties: CpuProperties, profile: Profile, cycle_ms: float) -> Cpu:
+    options = properties.cpu_options() | {"profile": profile}
+    try:
+        return Cpu(program, cycle_ms=cycle_ms, **options)
+    except ValueError:  # e.g. a clock memory byte the chosen profile lacks: the file's check says
+        return Cpu(program, profile, cycle_ms)

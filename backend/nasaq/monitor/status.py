@@ -156,6 +156,31 @@ class Recorder:
         )
         return self.last
 
+    def at_hold(
+        self, frame: bytearray, params: list[Any], regs: tuple[Any, ...], scan: int
+    ) -> BlockStatus:
+        """The status of the held block at the hold: every line's variables as they are now in
+        the held scan (read from the live frame as the Locals are, so both show the same
+        values), not as the last sampled scan left them; the instruction rows stay the last
+        sample's. TIA Portal also shows an SCL block's current values at a breakpoint."""
+        info, by_name = self.info, self.info.by_name
+        lines: dict[int, dict[str, Value]] = {}
+        for index, name in enumerate(self.names):
+            line = info.lines[index]
+            slot = None if name is None or line is None else by_name.get(name.casefold())
+            if slot is not None and line is not None:
+                value = read_slot(slot, frame, regs[DI], regs[AR2], params)
+                lines.setdefault(line, {})[slot.name] = value
+        last = self.last
+        return BlockStatus(
+            block=info.name,
+            language=_LANGUAGES.get(info.language, "stl"),
+            scan=scan,
+            instructions=[] if last is None else last.instructions,
+            lines=[LineStatus(line=k, values=v) for k, v in sorted(lines.items())],
+            elements=[] if last is None else last.elements,
+        )
+
 
 _LANGUAGES: dict[str, Literal["stl", "scl", "lad", "fbd"]] = {
     "stl": "stl",

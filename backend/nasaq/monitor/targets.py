@@ -33,6 +33,7 @@ from nasaq.cpu.bcd import int_to_bcd
 from nasaq.cpu.memory import db_size
 from nasaq.cpu.timers import BASES_MS
 from nasaq.diagnostics import render
+from nasaq.diagnostics.phrases import Phrase, phrase
 from nasaq.headless.addresses import (
     AddressError,
     CounterAddress,
@@ -86,10 +87,11 @@ class TargetError(ValueError):
     """A target or value the monitor cannot use. ``code`` is MON603 (no such address, symbol or
     variable) or MON606 (a value that does not fit or parse); ``str()`` says why and what works."""
 
-    def __init__(self, code: str, target: str, reason: str) -> None:
+    def __init__(self, code: str, target: str, reason: Phrase | str) -> None:
         self.code = code
         self.params: dict[str, object] = {"target": target, "reason": reason}
-        super().__init__(render(code, None, target=target, reason=reason).message)
+        self.diagnostic = render(code, None, target=target, reason=reason)
+        super().__init__(self.diagnostic.message)
 
 
 @dataclass(frozen=True, slots=True)
@@ -132,13 +134,13 @@ class _Resolver:
         self.types = symbol_types
         self.db = 0  # the DB whose variables are being resolved
 
-    def error(self, reason: str) -> TargetError:
+    def error(self, reason: Phrase | str) -> TargetError:
         return TargetError("MON603", self.text, reason)
 
     def target(self) -> Target:
         text = self.text
         if not text:
-            raise self.error(f"type an address, a symbol or a DB variable (examples: {EXAMPLES})")
+            raise self.error(phrase("target_empty", examples=EXAMPLES))
         if _ABSOLUTE.match(text) or _PERIPHERAL.match(text):
             try:
                 return self.address(text)
@@ -146,12 +148,9 @@ class _Resolver:
                 if text.casefold() not in self.symbols:
                     raise
         if _LOCAL.match(text):
-            raise self.error(
-                "local data (#name, L) exists only while its block runs: watch it while the CPU "
-                "holds in that block"
-            )
+            raise self.error(phrase("target_local"))
         if _OPEN_DB.match(text):
-            raise self.error("say which data block, e.g. DB1.DBW2")
+            raise self.error(phrase("target_open_db"))
         if (name := self.symbols.get(_unquoted(text).casefold())) is not None:
             return self.symbol(name)
         if match := _SYMBOLIC_DB_ADDRESS.match(text):
@@ -166,7 +165,7 @@ class _Resolver:
         try:
             address = parse_address(text)
         except AddressError as error:
-            reason = str(error).removeprefix(text.strip().upper() + ": ")
+            reason = error.phrase or str(error).removeprefix(text.strip().upper() + ": ")
             raise self.error(reason) from None
         if isinstance(address, TimerAddress):
             return Target(f"T{address.number}", "TIMER", None, timer=address.number)
@@ -179,9 +178,7 @@ class _Resolver:
     def peripheral(self, match: re.Match[str]) -> Target:
         size = match["size"].upper()
         if match["bit"] is not None or size in ("", "X"):
-            raise self.error(
-                "the peripheral areas are read by byte, word or doubleword, e.g. PIB0, PIW256, PQD4"
-            )
+            raise self.error(phrase("target_peripheral_width"))
         area = Area.PI if match["area"].upper() in ("I", "E") else Area.PQ
         direct = Direct(area, _WIDTHS[size], int(match["byte"]))
         return Target(address_text(direct), _WIDTH_TYPES[direct.width], direct)
@@ -190,16 +187,24 @@ class _Resolver:
         block = self.program.get(BlockKind.DB, number)
         if block is None:
             known = [f"DB{n}" for kind, n in sorted(self.program.blocks) if kind is BlockKind.DB]
-            has = f"its data blocks: {_listed(known)}" if known else "it has no data blocks"
-            raise self.error(f"DB{number} is not in the downloaded program ({has})")
+            raise self.error(
+                phrase("db_missing_has", db=number, known=_listed(known))
+                if known
+                else phrase("db_missing_none", db=number)
+            )
         return block
 
     def check_db_range(self, direct: Direct) -> None:
         assert direct.db is not None
         size = db_size(self.data_block(direct.db), self.program)
         if direct.byte + max(1, int(direct.width) // 8) > size:
-            last = f"its last byte is DB{direct.db}.DBB{size - 1}" if size else "it holds no data"
-            raise self.error(f"DB{direct.db} is {size} bytes long: {last}")
+            raise self.error(
+                phrase(
+                    "db_range_last", db=direct.db, size=size, last=f"DB{direct.db}.DBB{size - 1}"
+                )
+                if size
+                else phrase("db_range_empty", db=direct.db, size=size)
+            )
 
     # symbols
 
@@ -208,17 +213,18 @@ class _Resolver:
         if found is not None:
             return found
         close = difflib.get_close_matches(name.casefold(), list(self.symbols), n=1, cutoff=0.75)
-        hint = (
-            f'; did you mean "{self.symbols[close[0]]}"?' if close else f" (examples: {EXAMPLES})"
+        raise self.error(
+            phrase("symbol_unknown_close", name=name, close=self.symbols[close[0]])
+            if close
+            else phrase("symbol_unknown", name=name, examples=EXAMPLES)
         )
-        raise self.error(f'"{name}" is neither an address nor a symbol of the program{hint}')
 
     def parsed_symbol(self, name: str) -> stl_addresses.Parsed:
         address = self.program.symbols[name]
         try:
             return stl_addresses.parse_address(address)
         except stl_addresses.AddressError:
-            raise self.error(f'"{name}" stands for {address}, which is not an address') from None
+            raise self.error(phrase("symbol_not_address", name=name, address=address)) from None
 
     def symbol(self, name: str) -> Target:
         parsed, label, address = self.parsed_symbol(name), f'"{name}"', self.program.symbols[name]
@@ -229,7 +235,7 @@ class _Resolver:
         if parsed.kind == "block":
             if parsed.block is BlockKind.DB:
                 return self.variable(self.data_block(parsed.number), label, [])
-            raise self.error(f"{label} is the block {address}, which has no value to watch")
+            raise self.error(phrase("symbol_is_block", label=label, address=address))
         area, width = parsed.area, parsed.width
         if (
             area is None
@@ -237,7 +243,7 @@ class _Resolver:
             or area not in _WATCHED_AREAS
             or (area is Area.DB and parsed.db is None)
         ):
-            raise self.error(f"{label} is {address}, which exists only inside a running block")
+            raise self.error(phrase("symbol_is_local", label=label, address=address))
         direct = Direct(area, width, parsed.byte, parsed.bit, parsed.db)
         if direct.db is not None:
             self.check_db_range(direct)
@@ -250,10 +256,7 @@ class _Resolver:
     def symbol_db(self, name: str) -> Block:
         parsed = self.parsed_symbol(name)
         if parsed.kind != "block" or parsed.block is not BlockKind.DB:
-            raise self.error(
-                f'"{name}" is {self.program.symbols[name]}, not a data block: only a DB has '
-                f"variables (e.g. DB1.level)"
-            )
+            raise self.error(phrase("symbol_not_db", name=name, address=self.program.symbols[name]))
         return self.data_block(parsed.number)
 
     def symbolic_db_address(self, symbol: str, rest: str) -> Target:
@@ -268,7 +271,7 @@ class _Resolver:
         head = _HEAD.match(text)
         selectors = _selectors(text, head.end()) if head is not None else None
         if head is None or selectors is None:
-            raise self.error(f"not an address, a symbol or a DB variable (examples: {EXAMPLES})")
+            raise self.error(phrase("target_unreadable", examples=EXAMPLES))
         if head["db"] is not None:
             number = int(head["db"])
             return self.variable(self.data_block(number), f"DB{number}", selectors)
@@ -280,14 +283,15 @@ class _Resolver:
     def variable(self, block: Block, label: str, selectors: list[Selector]) -> Target:
         top = _layout(block, self.program)
         if not top:
-            raise self.error(
-                f"{label} declares no variables Nasaq knows: use its addresses, "
-                f"e.g. DB{block.number}.DBW0"
-            )
+            raise self.error(phrase("db_no_layout", label=label, example=f"DB{block.number}.DBW0"))
         if not selectors:
             raise self.error(
-                f"{label} is a data block: name one of its variables, e.g. {label}.{top[0].name} "
-                f"(it has {_names(top)})"
+                phrase(
+                    "db_name_variable",
+                    label=label,
+                    example=f"{label}.{top[0].name}",
+                    known=_names(top),
+                )
             )
         self.db = block.number
         path, current = label, None
@@ -308,38 +312,52 @@ class _Resolver:
             candidates = top
         elif array_shape(parent.type) is not None:
             raise self.error(
-                f"{path} has type {parent.type}: give an index first, e.g. {_first(path, parent)}"
+                phrase("index_first", path=path, type=parent.type, example=_first(path, parent))
             )
         elif not parent.members:
-            raise self.error(f"{path} has type {parent.type}, which has no variables")
+            raise self.error(phrase("type_no_variables", path=path, type=parent.type))
         else:
             candidates = parent.members
         found = next((v for v in candidates if v.name.casefold() == name.casefold()), None)
         if found is None:
-            raise self.error(f"{path} has no variable {name} (it has {_names(candidates)})")
-        if found.section == "IN_OUT" and _BY_REFERENCE.match(found.type):
             raise self.error(
-                f"{path}.{found.name} is an IN_OUT parameter of type {found.type}: the instance "
-                "DB holds only a pointer to it; watch the actual parameter instead"
+                phrase("no_such_variable", path=path, name=name, known=_names(candidates))
             )
+        if found.section == "IN_OUT" and _BY_REFERENCE.match(found.type):
+            raise self.error(phrase("in_out_pointer", path=f"{path}.{found.name}", type=found.type))
         return found
 
     def element(self, parent: Variable | None, indices: tuple[int, ...], path: str) -> Variable:
         shape = array_shape(parent.type) if parent is not None else None
         if parent is None or shape is None:
-            what = "is a data block" if parent is None else f"has type {parent.type}"
-            raise self.error(f"{path} {what}, not an ARRAY: only an array takes an index")
+            raise self.error(
+                phrase("db_not_array", path=path)
+                if parent is None
+                else phrase("type_not_array", path=path, type=parent.type)
+            )
         dims, element_type = shape
         if len(indices) != len(dims):
             raise self.error(
-                f"{path} has type {parent.type}: it takes {len(dims)} index(es), "
-                f"e.g. {_first(path, parent)}"
+                phrase(
+                    "index_count",
+                    path=path,
+                    type=parent.type,
+                    count=len(dims),
+                    example=_first(path, parent),
+                )
             )
         linear, count = 0, 1
         for index, (low, high) in zip(indices, dims, strict=True):
             if not low <= index <= high:
                 raise self.error(
-                    f"index {index} is outside {low}..{high} ({path} has type {parent.type})"
+                    phrase(
+                        "index_outside",
+                        index=index,
+                        low=low,
+                        high=high,
+                        path=path,
+                        type=parent.type,
+                    )
                 )
             linear = linear * (high - low + 1) + index - low
             count *= high - low + 1
@@ -348,8 +366,13 @@ class _Resolver:
         if layout is None:  # e.g. ARRAY OF STRUCT: the IR keeps no member list for its elements
             start = (parent.offset_bits + linear * (parent.size_bits // count)) // 8
             raise self.error(
-                f"Nasaq does not know the layout of the {element_type} elements of {path}: "
-                f"watch {name} by address, from DB{self.db}.DBB{start}"
+                phrase(
+                    "element_layout",
+                    type=element_type,
+                    path=path,
+                    name=name,
+                    start=f"DB{self.db}.DBB{start}",
+                )
             )
         stride, size, members = layout
         offset = parent.offset_bits + linear * stride
@@ -382,17 +405,27 @@ class _Resolver:
             return Target(path, kind, Direct(Area.DB, width, offset // 8, bit, db=db))
         if array_shape(variable.type) is not None:
             raise self.error(
-                f"{path} has type {variable.type}: add an index, e.g. {_first(path, variable)}"
+                phrase("add_index", path=path, type=variable.type, example=_first(path, variable))
             )
         if variable.members:
             raise self.error(
-                f"{path} has type {variable.type}: name one of its variables, e.g. "
-                f"{path}.{variable.members[0].name} (it has {_names(variable.members)})"
+                phrase(
+                    "name_member",
+                    path=path,
+                    type=variable.type,
+                    example=f"{path}.{variable.members[0].name}",
+                    known=_names(variable.members),
+                )
             )
         first = f"DB{db}.DBB{variable.offset_bits // 8}"
         raise self.error(
-            f"{path} has type {variable.type} ({variable.size_bits // 8} bytes), not one "
-            f"elementary value: watch its bytes by address from {first}"
+            phrase(
+                "not_elementary",
+                path=path,
+                type=variable.type,
+                bytes=variable.size_bits // 8,
+                first=first,
+            )
         )
 
 
@@ -424,11 +457,7 @@ def _selectors(text: str, position: int) -> list[Selector] | None:
             try:
                 selectors.append(tuple(int(part) for part in match["indices"].split(",")))
             except ValueError:
-                raise TargetError(
-                    "MON603",
-                    text,
-                    "an array index is a whole number, e.g. DB1.arr[3] or DB1.m[1, 2]",
-                ) from None
+                raise TargetError("MON603", text, phrase("array_index_whole")) from None
         else:
             selectors.append(match["quoted"] or match["name"])
         position = match.end()
@@ -510,14 +539,14 @@ def write(target: Target, cpu: Cpu, value: bool | int | float | str | None) -> N
     try:
         cpu.write(direct, pattern)
     except KeyError:
-        raise TargetError("MON603", target.text, f"DB{direct.db} is not loaded") from None
+        raise TargetError("MON603", target.text, phrase("db_not_loaded", db=direct.db)) from None
     except IndexError:
         raise _outside(target, direct, cpu) from None
 
 
 def _direct(target: Target) -> Direct:
     if target.direct is None:
-        raise TargetError("MON603", target.text, "it has no address in the CPU's memory")
+        raise TargetError("MON603", target.text, phrase("no_memory_address"))
     return target.direct
 
 
@@ -525,18 +554,24 @@ def _numbered(target: Target, number: int, cpu: Cpu, prefix: str) -> int:
     count = cpu.profile.timers if prefix == "T" else cpu.profile.counters
     if not 0 <= number < count:
         last = f"{prefix}{count - 1}"
-        raise TargetError("MON603", target.text, f"the {cpu.profile.value} has {prefix}0 to {last}")
+        raise TargetError(
+            "MON603",
+            target.text,
+            phrase("numbered_range", cpu=cpu.profile.value, first=f"{prefix}0", last=last),
+        )
     return number
 
 
 def _outside(target: Target, direct: Direct, cpu: Cpu) -> TargetError:
     if direct.db is not None:
         size = len(cpu.db_bytes(direct.db) or b"")
-        return TargetError("MON603", target.text, f"DB{direct.db} is {size} bytes long")
+        return TargetError("MON603", target.text, phrase("db_length", db=direct.db, size=size))
     size = len(cpu.area_bytes(direct.area))
     area = direct.area.value
     return TargetError(
-        "MON603", target.text, f"the {cpu.profile.value} has {area}B0 to {area}B{size - 1}"
+        "MON603",
+        target.text,
+        phrase("area_range", cpu=cpu.profile.value, first=f"{area}B0", last=f"{area}B{size - 1}"),
     )
 
 
@@ -554,17 +589,25 @@ _CONSTANTS = {
 }
 # Whole-number types: the values they take (negative BYTE/WORD/DWORD values are stored as their
 # two's complement, as the command line does) and how to say so.
-_RANGES: dict[str, tuple[int, int, str]] = {
-    "BYTE": (-128, 0xFF, "-128 to 255 (16#FF)"),
-    "WORD": (-32768, 0xFFFF, "-32768 to 65535 (16#FFFF)"),
-    "DWORD": (-(2**31), 2**32 - 1, "-2147483648 to 4294967295 (16#FFFFFFFF)"),
-    "INT": (-32768, 32767, "-32768 to 32767"),
-    "DINT": (-(2**31), 2**31 - 1, "-2147483648 to 2147483647"),
-    "TIME": (-(2**31) + 1, 2**31 - 1, "T#-24D20H31M23S647MS to T#24D20H31M23S647MS"),
-    "S5TIME": (0, 9_990_000, "S5T#0MS to S5T#2H46M30S"),
-    "DATE": (0, 65378, "D#1990-1-1 to D#2168-12-31"),
-    "TIME_OF_DAY": (0, 86_399_999, "TOD#0:0:0 to TOD#23:59:59.999"),
-    "CHAR": (0, 255, "one character of code 0 to 255"),
+_RANGES: dict[str, tuple[int, int, Phrase]] = {
+    "BYTE": (-128, 0xFF, phrase("range", low="-128", high="255 (16#FF)")),
+    "WORD": (-32768, 0xFFFF, phrase("range", low="-32768", high="65535 (16#FFFF)")),
+    "DWORD": (
+        -(2**31),
+        2**32 - 1,
+        phrase("range", low="-2147483648", high="4294967295 (16#FFFFFFFF)"),
+    ),
+    "INT": (-32768, 32767, phrase("range", low="-32768", high="32767")),
+    "DINT": (-(2**31), 2**31 - 1, phrase("range", low="-2147483648", high="2147483647")),
+    "TIME": (
+        -(2**31) + 1,
+        2**31 - 1,
+        phrase("range", low="T#-24D20H31M23S647MS", high="T#24D20H31M23S647MS"),
+    ),
+    "S5TIME": (0, 9_990_000, phrase("range", low="S5T#0MS", high="S5T#2H46M30S")),
+    "DATE": (0, 65378, phrase("range", low="D#1990-1-1", high="D#2168-12-31")),
+    "TIME_OF_DAY": (0, 86_399_999, phrase("range", low="TOD#0:0:0", high="TOD#23:59:59.999")),
+    "CHAR": (0, 255, phrase("char_range")),
 }
 _EXAMPLE_VALUES = {
     "BOOL": "TRUE",
@@ -591,29 +634,27 @@ def encode(target: Target, value: bool | int | float | str | None) -> int:
     ``D#2024-1-31``, ``TOD#13:30:00``, ``'A'``."""
     kind = _canonical(target.type)
     if target.timer is not None or target.counter is not None or kind in ("TIMER", "COUNTER"):
-        raise _bad(
-            target, "the program runs timers and counters (SD, CU ...); they cannot be written"
-        )
+        raise _bad(target, phrase("timers_not_written"))
     if value is None:
         raise _bad(
-            target, f"a value of type {kind} is needed, e.g. {_EXAMPLE_VALUES.get(kind, '0')}"
+            target, phrase("value_needed", type=kind, example=_EXAMPLE_VALUES.get(kind, "0"))
         )
     if kind == "BOOL":
         return _encode_bool(target, value)
     if kind == "REAL":
         return _encode_real(target, value)
     if kind not in _RANGES:
-        raise _bad(target, f"type {target.type} is not one elementary value and cannot be written")
+        raise _bad(target, phrase("type_not_writable", type=target.type))
     number = _whole(target, kind, value)
     low, high, allowed = _RANGES[kind]
     if not low <= number <= high:
-        raise _bad(target, f"{_shown(value)} does not fit type {kind}: {allowed}")
+        raise _bad(target, phrase("value_not_fit", value=_shown(value), type=kind, allowed=allowed))
     if kind == "S5TIME":
         return _s5time(number)
     return number & ((1 << ELEMENTARY_BITS[kind]) - 1)
 
 
-def _bad(target: Target, reason: str) -> TargetError:
+def _bad(target: Target, reason: Phrase) -> TargetError:
     return TargetError("MON606", target.text, reason)
 
 
@@ -626,12 +667,12 @@ def _encode_bool(target: Target, value: bool | int | float | str) -> int:
         return int(value)
     if isinstance(value, str) and value.strip().upper() in _BOOLS:
         return _BOOLS[value.strip().upper()]
-    raise _bad(target, f"{_shown(value)} is not a BOOL: write TRUE or FALSE (1 or 0)")
+    raise _bad(target, phrase("not_bool", value=_shown(value)))
 
 
 def _encode_real(target: Target, value: bool | int | float | str) -> int:
     if isinstance(value, bool):
-        raise _bad(target, f"{value} is not a REAL: write a number, e.g. 1.5")
+        raise _bad(target, phrase("not_real", value=value))
     number: float | None
     if isinstance(value, str):
         number = _SPECIAL_REALS.get(value.strip().upper())
@@ -642,8 +683,9 @@ def _encode_real(target: Target, value: bool | int | float | str) -> int:
     try:
         return real_pattern(number)
     except OverflowError:
+        allowed = phrase("range", low="-3.402823E+38", high="3.402823E+38")
         raise _bad(
-            target, f"{_shown(value)} does not fit type REAL: -3.402823E+38 to 3.402823E+38"
+            target, phrase("value_not_fit", value=_shown(value), type="REAL", allowed=allowed)
         ) from None
 
 
@@ -655,7 +697,7 @@ def _whole(target: Target, kind: str, value: bool | int | float | str) -> int:
         if not number.is_integer():
             raise _bad(
                 target,
-                f"{_shown(value)} is not a whole number; type {kind} holds {_RANGES[kind][2]}",
+                phrase("not_whole", value=_shown(value), type=kind, allowed=_RANGES[kind][2]),
             )
         return int(number)
     return int(number)
@@ -680,24 +722,35 @@ def _parse(target: Target, kind: str, text: str) -> int | float:
             try:
                 return parse_number(cleaned)  # -16#FF, which is no STEP 7 constant
             except AddressError:
-                raise _bad(target, f"{cleaned}{_constant_reason(error)}") from None
+                raise _bad(target, _constant_reason(cleaned, error)) from None
         if constant.type not in _CONSTANTS.get(kind, _INTEGERS):
             raise _bad(
-                target, f"{cleaned} is of type {constant.type.value}, not {kind} (e.g. {example})"
+                target,
+                phrase(
+                    "constant_of_type",
+                    value=cleaned,
+                    actual=constant.type.value,
+                    type=kind,
+                    example=example,
+                ),
             )
         return constant.value
     try:
         return parse_number(cleaned)
     except AddressError:
-        raise _bad(target, f"{cleaned!r} is not a value of type {kind} (e.g. {example})") from None
+        raise _bad(
+            target, phrase("not_of_type", value=repr(cleaned), type=kind, example=example)
+        ) from None
 
 
-def _constant_reason(error: ConstantError) -> str:
+def _constant_reason(cleaned: str, error: ConstantError) -> Phrase:
     if error.code == "STL214":
         kind = str(error.params["type"])
-        allowed = _RANGES[kind][2] if kind in _RANGES else "out of range"
-        return f" does not fit type {kind}: {allowed}"
-    return f": {error.params.get('reason', 'not a constant')}"
+        allowed = _RANGES[kind][2] if kind in _RANGES else phrase("out_of_range")
+        return phrase("value_not_fit", value=cleaned, type=kind, allowed=allowed)
+    return phrase(
+        "not_constant", value=cleaned, reason=error.params.get("reason", "not a constant")
+    )
 
 
 def _s5time(ms: int) -> int:

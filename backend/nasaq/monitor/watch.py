@@ -41,7 +41,16 @@ def resolve_entries(
             target = memory_target(text, program, cpu)
         except targets.TargetError as error:
             resolved[text] = str(error)
-            report.append({"entry": text, "code": error.code, "error": str(error)})
+            report.append(
+                {
+                    "entry": text,
+                    "code": error.code,
+                    "error": str(error),
+                    # for the UI's language: the key and params of the problem (phrases inside)
+                    "key": error.diagnostic.key,
+                    "params": error.diagnostic.params,
+                }
+            )
             continue
         resolved[text] = target
         report.append({"entry": text, "type": target.type})

@@ -5,10 +5,10 @@ processes (one per core by default, ``nasaq.monitor.pool``) and keeps its own pr
 web: a busy classroom's CPUs never slow the sockets and the REST API, and the sessions use every
 core. The server talks to a worker over a pipe with tuples:
 
-server → worker: ``("create", req, id, sources, profile, cycle_ms, time_mode)``, ``("attach", id,
-client)``, ``("detach", id, client)``, ``("message", id, client, json)``, ``("call", req, id, op,
-args)`` with op ``info``, ``download``, ``diagnostics``, ``trend_csv`` or ``close``, ``("reap",
-req, idle_seconds)``, ``("shutdown",)``.
+server → worker: ``("create", req, id, sources, profile, cycle_ms, time_mode, project_id)``,
+``("attach", id, client)``, ``("detach", id, client)``, ``("message", id, client, json)``,
+``("call", req, id, op, args)`` with op ``info``, ``download``, ``diagnostics``, ``trend_csv``
+or ``close``, ``("reap", req, idle_seconds)``, ``("shutdown",)``.
 
 worker → server: ``("result", req, ok, payload)`` (payload: the result, or ``(code, params)`` of
 a MonitorError), ``("reply", id, client, json)`` (an ack or error), ``("frame", id, client,
@@ -33,6 +33,8 @@ from typing import Any
 from pydantic import ValidationError
 
 from nasaq.cpu import Profile
+from nasaq.diagnostics.phrases import phrase
+from nasaq.diagnostics.validation import validation_reason
 from nasaq.lang.stl import SourceFile
 from nasaq.monitor import protocol as p
 from nasaq.monitor.commands import command
@@ -87,7 +89,9 @@ class Worker:
             _, session_id, client = item
             found = self.sessions.get(session_id)
             if found is not None:
-                found.clients.pop(client, None)
+                view = found.clients.pop(client, None)
+                if view is not None:
+                    found.client_left(view)
         elif kind == "message":
             self.message(*item[1:])
         elif kind == "call":
@@ -105,10 +109,13 @@ class Worker:
         profile: str,
         cycle_ms: float,
         time_mode: p.TimeModeName,
+        project_id: int | None = None,
     ) -> None:
         try:
             files = [SourceFile(name=name, text=text) for name, text in sources]
-            session = Session(session_id, files, Profile(profile), cycle_ms, time_mode)
+            session = Session(
+                session_id, files, Profile(profile), cycle_ms, time_mode, project_id=project_id
+            )
         except MonitorError as error:
             self.send(("result", req, False, (error.code, error.params)))
             return
@@ -200,6 +207,9 @@ def info(session: Session) -> dict[str, Any]:
         "blocks": sorted(f"{k.value}{n}" for k, n in session.program.blocks),
         "cpu": session.cpu_state().model_dump(mode="json"),
         "clients": sorted(session.clients),
+        "project_id": session.project_id,
+        "profile": session.profile.value,
+        "started_at": session.started_at,
     }
 
 
@@ -214,19 +224,33 @@ def trend_csv(session: Session, client: int) -> str:
     view = session.clients.get(client)
     if view is None:
         raise MonitorError(
-            "MON603", target=f"client {client}", reason="no such client is connected"
+            "MON603",
+            target=phrase("client_n", client=client),
+            reason=phrase("no_such_client"),
         )
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(["scan", "time_ms", *(t.text for t in view.trend)])
+    reals = [t.type == "REAL" for t in view.trend]
     for sample in list(view.history):
-        writer.writerow([sample.scan, sample.time_ms, *sample.values])
+        values = [_real_text(v) if r else v for v, r in zip(sample.values, reals, strict=False)]
+        writer.writerow([sample.scan, sample.time_ms, *values])
     return out.getvalue()
+
+
+def _real_text(value: object) -> object:
+    """A REAL as the watch table and the trend show it: seven significant digits (a REAL's
+    precision), so ``42.4`` is not written as the double ``42.400001525878906``."""
+    return format(value, ".7g") if isinstance(value, float) else value
 
 
 def error_json(ref: int | None, error: MonitorError) -> str:
     return p.ProtocolError(
-        ref=ref, code=error.code, key=error.key, message=str(error), params=error.params
+        ref=ref,
+        code=error.code,
+        key=error.key,
+        message=str(error),
+        params=error.diagnostic.params,
     ).model_dump_json()
 
 
@@ -237,14 +261,18 @@ def answer_json(ref: int | None, future: Future[Any]) -> str:
     if isinstance(error, MonitorError):
         return error_json(ref, error)
     log.error("monitor worker: a command failed", exc_info=error)
-    return error_json(ref, MonitorError("MON607", action="This command", reason="internal error"))
+    return error_json(
+        ref, MonitorError("MON607", action=phrase("act_command"), reason=phrase("internal_error"))
+    )
 
 
 def malformed(error: ValidationError) -> MonitorError:
     first = error.errors()[0]
     where = ".".join(str(part) for part in first.get("loc", ()))
-    text = str(first.get("msg", "invalid"))
-    return MonitorError("MON601", reason=f"{where}: {text}" if where else text)
+    reason = validation_reason(first)
+    if where:
+        return MonitorError("MON601", reason=phrase("field_reason", field=where, reason=reason))
+    return MonitorError("MON601", reason=reason)
 
 
 def main(connection: Connection) -> None:

@@ -1,4 +1,8 @@
-"""Runs one scenario against a fresh CPU and collects every mismatch."""
+"""Runs one scenario against a fresh CPU and collects every mismatch.
+
+The sources' ``cpu.properties`` (``nasaq.headless.project_file``) sets the CPU; the scenario's
+own ``profile`` and ``cycle_ms``, when the file names them, win over it.
+"""
 
 from __future__ import annotations
 
@@ -8,6 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from nasaq.cpu import Cpu, Profile
+from nasaq.headless import project_file
 from nasaq.headless.addresses import (
     AddressError,
     CounterAddress,
@@ -156,8 +161,35 @@ def run_scenario(path: Path) -> ScenarioResult:
     if not compiled.ok:
         result.error = "the sources do not compile"
         return result
-    cpu = Cpu(compiled.program, profile=Profile(scenario.profile), cycle_ms=scenario.cycle_ms)
-    cpu.start()
+    try:
+        found = project_file.load(scenario.source_paths())
+    except SourceError as exc:
+        result.error = str(exc)
+        return result
+    cold = False
+    options: dict[str, Any] = {}
+    if found is not None:
+        if not found.ok:
+            result.diagnostics += project_file.problems(found)
+            result.error = "the CPU properties file has errors"
+            return result
+        props = found.properties
+        given = scenario.model_fields_set
+        update: dict[str, Any] = {}
+        if "profile" not in given:
+            update["profile"] = props.profile.value
+        if "cycle_ms" not in given:
+            update["cycle_ms"] = float(props.cycle_ms)
+        scenario = scenario.model_copy(update=update)
+        options = props.cpu_options() | {"profile": Profile(scenario.profile)}
+        cold = props.startup == "cold"
+    options.setdefault("profile", Profile(scenario.profile))
+    try:
+        cpu = Cpu(compiled.program, cycle_ms=scenario.cycle_ms, **options)
+    except ValueError as exc:  # e.g. retentive counts the scenario's profile does not have
+        result.error = f"{path}: {exc}"
+        return result
+    cpu.start(cold=cold)
     note: str | None = None  # a note names the steps that follow it, until the next note
     try:
         for index, step in enumerate(scenario.steps, start=1):

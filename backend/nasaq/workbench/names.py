@@ -1,7 +1,8 @@
 """Which names a project file may have, and what language a name means.
 
 A name is what the compiler reads by its suffix (``.awl``/``.stl`` STL, ``.scl`` SCL, ``.lad``
-LAD and ``.fbd`` FBD in their text format, ``.sdf``, ``.asc``, ``.seq``, ``.csv`` symbol tables)
+LAD and ``.fbd`` FBD in their text format, ``.sdf``, ``.asc``, ``.seq``, ``.csv`` symbol tables;
+``.vat`` watch tables and ``cpu.properties`` are project files the compiler skips)
 and also a plain file in an export, so it avoids what
 any file system or zip tool refuses: path separators, control and reserved characters, Windows'
 device names, a leading dot (hidden files) and a trailing dot or space (Windows drops them).
@@ -12,11 +13,17 @@ from __future__ import annotations
 import re
 from typing import Literal
 
-from nasaq.lang.stl.compiler import LAD_SUFFIXES, MAX_SOURCE_CHARS, SCL_SUFFIXES, STL_SUFFIXES
+from nasaq.lang.stl.compiler import (
+    LAD_SUFFIXES,
+    MAX_SOURCE_CHARS,
+    SCL_SUFFIXES,
+    STL_SUFFIXES,
+    WATCH_TABLE_SUFFIXES,
+)
 from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES
 
 BlockLanguage = Literal["stl", "scl", "lad", "fbd"]
-Language = Literal["stl", "scl", "lad", "fbd", "symbols"]
+Language = Literal["stl", "scl", "lad", "fbd", "symbols", "watch", "cpu"]
 
 MAX_NAME_CHARS = 128
 MAX_TEXT_CHARS = MAX_SOURCE_CHARS  # the compiler refuses larger sources (STL111)
@@ -39,6 +46,10 @@ def language_of(name: str) -> Language | None:
         return "lad" if suffix == ".lad" else "fbd"
     if suffix in SYMBOL_TABLE_SUFFIXES:
         return "symbols"
+    if suffix in WATCH_TABLE_SUFFIXES:
+        return "watch"  # nasaq.workbench.watch_table: no program, the compiler skips it
+    if name.lower() == "cpu.properties":
+        return "cpu"  # nasaq.workbench.cpu_properties: the one CPU properties file of a project
     return None
 
 

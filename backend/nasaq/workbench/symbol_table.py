@@ -33,7 +33,8 @@ from pydantic import BaseModel, Field
 
 from nasaq.diagnostics import Diagnostic, render
 from nasaq.ir.types import ELEMENTARY_BITS, TYPE_ALIASES
-from nasaq.lang.stl.addresses import AddressError, parse_address
+from nasaq.lang.stl.addresses import AddressError, Parsed, parse_address
+from nasaq.lang.stl.symbol_fit import misfit
 from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES, _rows_asc, _rows_csv, _rows_seq
 
 Format = Literal["sdf", "asc", "seq", "csv"]
@@ -174,7 +175,8 @@ def merged(old: list[SymbolRow], new: list[SymbolRow]) -> list[SymbolRow]:
 
 
 def problems(rows: list[SymbolRow], kind: Format | None = None) -> list[RowProblem]:
-    """What is wrong with each row: its address, name (missing, duplicate), type; for ``asc``
+    """What is wrong with each row: its address, name (missing, duplicate), type (unknown, or
+    not fitting the address: SYT002); for ``asc``
     also fields too long for its columns. Rows are numbered from 1 in the messages."""
     found: list[RowProblem] = []
     names: dict[str, int] = {}
@@ -188,6 +190,7 @@ def problems(rows: list[SymbolRow], kind: Format | None = None) -> list[RowProbl
         if not any(getattr(row, key).strip() for key in FIELDS):
             continue
         address = " ".join(row.address.split())
+        parsed: Parsed | None = None
         try:
             parsed = parse_address(address)
         except AddressError as error:
@@ -207,6 +210,8 @@ def problems(rows: list[SymbolRow], kind: Format | None = None) -> list[RowProbl
             add(place, "name", "API121", name=row.name.strip(), first=first_name + 1)
         if row.type.strip() and not known_type(row.type):
             add(place, "type", "API123", type=row.type.strip())
+        elif parsed is not None and (allowed := misfit(parsed, row.type)) is not None:
+            add(place, "type", "SYT002", type=row.type.strip(), address=address, allowed=allowed)
         if kind == "asc":
             for field in FIELDS:
                 value = getattr(row, field).strip()

@@ -89,7 +89,8 @@ async function problemFrom(response: Response): Promise<ApiProblem> {
   };
 }
 
-async function request<T>(path: string, init: RequestInit = {}): Promise<T> {
+/** A JSON call to the API; failures are {@link ApiError}s with the catalogue's code. */
+export async function request<T>(path: string, init: RequestInit = {}): Promise<T> {
   const headers = new Headers(init.headers);
   headers.set('Accept', 'application/json');
   if (init.body !== undefined && !headers.has('Content-Type')) headers.set('Content-Type', 'application/json');

@@ -8,6 +8,7 @@ export type ClientMessage =
   | Watch
   | OpenBlock
   | Trend
+  | SessionState
   | Run
   | Stop
   | Restart
@@ -55,12 +56,26 @@ export interface OpenBlock {
   networks?: number[] | null;
 }
 
-/** Values sampled at the end of every scan, sent as batches of samples. */
+/**
+ * Values sampled at the end of every scan, sent as batches of samples. The same entries as
+ * the session already records (another tab's, or a reloaded page's) start with the samples
+ * recorded so far: the first frame carries that history.
+ */
 export interface Trend {
   /** Echoed in the ack or error that answers it */
   ref?: number | null;
   type: 'trend';
   entries: string[];
+}
+
+/**
+ * What the session keeps for whoever attaches (a reload, a second tab, another browser):
+ * the ack lists its breakpoints and the entries of the trend it records.
+ */
+export interface SessionState {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'session_state';
 }
 
 export interface Run {

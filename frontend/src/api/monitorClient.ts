@@ -12,6 +12,11 @@
  *   {@link MonitorState}, which React reads through `useSyncExternalStore`.
  * - A dropped connection is retried with exponential backoff; a session the server closed
  *   (MON614) or does not know (MON609) ends the client instead.
+ * - The session belongs to the project, not to this page: after every `hello` the client asks
+ *   for the `session_state` (the breakpoints set, the trend recorded) and hands it to
+ *   `onSessionState`, so that a reloaded page or a second tab shows the breakpoints again;
+ *   `state.sessionTrend` tells the trend panel which entries the session records (asking for the
+ *   same entries brings their history in the next frame).
  */
 import type {
   BlockStatus,
@@ -81,6 +86,24 @@ export interface BreakpointRequest {
   condition: string | null;
 }
 
+/** A breakpoint the session has set, as `session_state` lists it (PROTOCOL.md). */
+export interface SessionBreakpoint {
+  id: number;
+  /** The location as it was set (`{file, line}` or `{block, network}` ...). */
+  location: ProgramLocation;
+  condition: string | null;
+  /** The block it is in, and that block's source file. */
+  block: string;
+  file: string | null;
+}
+
+/** The ack of `session_state`: what a client that attaches shows again. */
+export interface SessionStateResult {
+  breakpoints: SessionBreakpoint[];
+  /** The entries of the trend the session records (empty: none). */
+  trend: string[];
+}
+
 /** What the server said about a breakpoint: waiting for its answer, set as `id`, or refused. */
 export interface BreakpointReport {
   state: 'pending' | 'set' | 'refused';
@@ -112,6 +135,12 @@ export interface MonitorState {
   closedBy: Problem | null;
   /** The server's answer for each breakpoint of {@link MonitorClient.setBreakpoints}, by key. */
   breakpoints: Readonly<Record<string, BreakpointReport>>;
+  /**
+   * The entries of the trend the session recorded when this client attached (a reload, a second
+   * tab): a trend panel with no entries of its own shows these (`setTrend` with them brings the
+   * history).
+   */
+  sessionTrend: readonly string[];
 }
 
 export const MAX_TREND_SAMPLES = 20_000;
@@ -134,6 +163,7 @@ export function initialMonitorState(): MonitorState {
     diagnostics: [],
     closedBy: null,
     breakpoints: {},
+    sessionTrend: [],
   };
 }
 
@@ -153,7 +183,11 @@ export function mergeFrame(state: MonitorState, frame: Frame): MonitorState {
   if (frame.block) next.block = frame.block;
   if (frame.trend && frame.trend.length > 0) next.trend = appendCapped(state.trend, frame.trend, MAX_TREND_SAMPLES);
   if (frame.hold) {
-    next.hold = frame.hold;
+    // The server sends the hold again after every command carried out at it (a page attaching
+    // sends several): an unchanged one keeps its object, so what follows the hold (the editor
+    // opening the held file) reacts once.
+    const same = state.hold !== null && JSON.stringify(state.hold) === JSON.stringify(frame.hold);
+    next.hold = same ? state.hold : frame.hold;
     next.released = false;
   } else if (frame.released) {
     next.hold = null;
@@ -203,6 +237,8 @@ export interface MonitorClientOptions {
   maxDelayMs?: number;
   /** Loads the diagnostic buffer's history after each connect (GET .../diagnostics). */
   loadDiagnostics?: () => Promise<readonly DiagnosticEntry[]>;
+  /** Gets what the session keeps (breakpoints, trend) after each connect. */
+  onSessionState?: (state: SessionStateResult) => void;
 }
 
 /** `ws(s)://<this host><path>`: the socket is always on the server that served the page. */
@@ -219,8 +255,8 @@ interface Pending {
 type Listener = () => void;
 
 export class MonitorClient {
-  private readonly options: Required<Omit<MonitorClientOptions, 'loadDiagnostics'>> &
-    Pick<MonitorClientOptions, 'loadDiagnostics'>;
+  private readonly options: Required<Omit<MonitorClientOptions, 'loadDiagnostics' | 'onSessionState'>> &
+    Pick<MonitorClientOptions, 'loadDiagnostics' | 'onSessionState'>;
   private state: MonitorState = initialMonitorState();
   private readonly listeners = new Set<Listener>();
   private socket: SocketLike | null = null;
@@ -239,8 +275,10 @@ export class MonitorClient {
   private wantedBreakpoints = new Map<string, BreakpointRequest>();
   /** What was sent for each key (the request object) and the id the server gave it. */
   private readonly sentBreakpoints = new Map<string, { request: BreakpointRequest; id: number | null }>();
-  /** Whether this client ever set a breakpoint (only then it clears them after a reconnect). */
-  private usedBreakpoints = false;
+  /** The ids this client's breakpoints had before the connection dropped. */
+  private previousBreakpointIds = new Set<number>();
+  /** Whether this client ever asked for a trend (only then an empty one is sent). */
+  private trendSent = false;
 
   constructor(options: MonitorClientOptions) {
     this.options = {
@@ -312,6 +350,7 @@ export class MonitorClient {
       return;
     }
     this.sentWatch = null;
+    for (const sent of this.sentBreakpoints.values()) if (sent.id !== null) this.previousBreakpointIds.add(sent.id);
     const delay = Math.min(this.options.maxDelayMs, this.options.initialDelayMs * 2 ** this.attempts);
     this.attempts += 1;
     this.update({ connection: 'reconnecting' });
@@ -356,6 +395,7 @@ export class MonitorClient {
         this.update({ connection: 'open', hello: message });
         this.resubscribe();
         void this.loadHistory();
+        void this.loadSessionState();
         return;
       case 'frame':
         this.update((state) => mergeFrame(state, message));
@@ -398,6 +438,32 @@ export class MonitorClient {
     }
   }
 
+  /**
+   * What the session keeps: its breakpoints go to `onSessionState` (the editors show them and
+   * set them through `setBreakpoints`, which the server answers with the same ids); those this
+   * client had set before a reconnect and no longer wants (removed while offline) are cleared.
+   */
+  private async loadSessionState(): Promise<void> {
+    const dropped = this.previousBreakpointIds;
+    this.previousBreakpointIds = new Set();
+    let found: SessionStateResult;
+    try {
+      const result = (await this.send({ type: 'session_state' })) as Partial<SessionStateResult> | null;
+      found = { breakpoints: result?.breakpoints ?? [], trend: result?.trend ?? [] };
+    } catch {
+      return; // the connection dropped: asked again at the next hello
+    }
+    const wanted = [...this.wantedBreakpoints.values()];
+    const kept: SessionBreakpoint[] = [];
+    for (const bp of found.breakpoints) {
+      const ours = wanted.some((request) => sameBreakpoint(request, { key: '', location: bp.location, condition: bp.condition }));
+      if (!ours && dropped.has(bp.id)) this.sendQuietly({ type: 'clear_breakpoint', id: bp.id });
+      else kept.push(bp);
+    }
+    this.update({ sessionTrend: [...found.trend] });
+    this.options.onSessionState?.({ breakpoints: kept, trend: found.trend });
+  }
+
   // -- sending ---------------------------------------------------------------------------------
   /** Sends a command; resolves with the ack's result, rejects with the server's error. */
   send(command: MonitorCommand): Promise<Record<string, unknown> | null> {
@@ -423,7 +489,11 @@ export class MonitorClient {
     this.sendQuietly({ type: 'subscribe_cpu', on: true });
     this.sentWatch = null;
     this.flushWatch();
-    if (this.trendEntries.length > 0) this.sendTrend().catch(() => undefined);
+    if (this.trendEntries.length > 0) {
+      // The session sends the trend's history again with the first frame: start from none.
+      this.update({ trend: [] });
+      this.sendTrend().catch(() => undefined);
+    } else this.trendSent = false; // the session dropped this client's trend with its socket
     if (this.openBlockName !== null) {
       this.sendQuietly({ type: 'open_block', block: this.openBlockName, networks: this.openBlockNetworks });
     }
@@ -487,6 +557,10 @@ export class MonitorClient {
 
   private async sendTrend(): Promise<void> {
     const entries = this.trendEntries;
+    // An empty trend from a client that never asked for one would stop the trend the session
+    // keeps for whoever asks next (a reloaded page's panel restoring its entries).
+    if (entries.length === 0 && !this.trendSent) return;
+    this.trendSent = entries.length > 0;
     const result = await this.send({ type: 'trend', entries: [...entries] });
     const types = ((result?.entries ?? []) as WatchEntryReport[]).map((report) => report.type ?? '');
     if (this.trendEntries === entries) this.update({ trendTypes: types });
@@ -527,15 +601,15 @@ export class MonitorClient {
   }
 
   private resendBreakpoints(): void {
+    // The session keeps its breakpoints while no client is connected: setting ours again gets
+    // the ids of those already there (no duplicates); those removed meanwhile are cleared once
+    // `session_state` has listed them.
     this.sentBreakpoints.clear();
-    // A reconnect finds the session's breakpoints still set: start from none, then set ours.
-    if (this.usedBreakpoints) this.sendQuietly({ type: 'clear_breakpoint', id: null });
     for (const request of this.wantedBreakpoints.values()) this.sendBreakpoint(request);
   }
 
   private sendBreakpoint(request: BreakpointRequest): void {
     if (this.state.connection !== 'open') return;
-    this.usedBreakpoints = true;
     const sent = { request, id: null as number | null };
     this.sentBreakpoints.set(request.key, sent);
     const report = (value: BreakpointReport) => {

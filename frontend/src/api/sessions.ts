@@ -1,6 +1,8 @@
 /**
  * The REST side of simulation sessions (PROTOCOL.md, "Sessions"): create one from a project's
- * saved files, download a changed program in STOP, the diagnostic buffer, the trend CSV, delete.
+ * saved files, find the project's running session (to attach to it after a reload or in another
+ * tab), list them all, download a changed program in STOP, the diagnostic buffer, the trend CSV,
+ * delete.
  * Failures are {@link ApiError}s with the catalogue's code and key, as for every API call.
  */
 import { ApiError, CLIENT_ERROR_CODES, getFile, listFiles } from './client';
@@ -16,6 +18,14 @@ export interface SessionOut {
   clients: number[];
   /** The socket's path on this server, e.g. `/api/sessions/ab12/ws`. */
   websocket: string;
+  /** The project the session was made from (null: sources posted directly). */
+  project_id: number | null;
+  /** That project's current name. */
+  project_name: string | null;
+  profile: 'S7-300' | 'S7-400';
+  /** When it was created (ISO 8601, UTC). */
+  started_at: string;
+  age_seconds: number;
 }
 
 /** `PUT /api/sessions/{id}/program` (backend `DownloadOut`). */
@@ -86,6 +96,16 @@ export function createProjectSession(projectId: number): Promise<SessionOut> {
   return call<SessionOut>('POST', `/api/projects/${projectId}/sessions`, {});
 }
 
+/** Every session on the server, newest first; with `projectId` only that project's. */
+export function listSessions(projectId?: number): Promise<SessionOut[]> {
+  return call<SessionOut[]>('GET', projectId === undefined ? '/api/sessions' : `/api/sessions?project_id=${projectId}`);
+}
+
+/** The project's running session (the newest), or null when it runs none. */
+export async function findProjectSession(projectId: number): Promise<SessionOut | null> {
+  return (await listSessions(projectId))[0] ?? null;
+}
+
 export function getSession(id: string): Promise<SessionOut> {
   return call<SessionOut>('GET', sessionPath(id));
 }
@@ -108,9 +128,10 @@ export function trendCsvUrl(id: string, client: number): string {
   return `${sessionPath(id)}/trend.csv?client=${client}`;
 }
 
-/** Every saved file of the project with its text, as a download sends them. */
+/** Every saved source of the project with its text, as a download sends them (watch tables are
+ * project files but no program: they stay out). */
 export async function projectSources(projectId: number): Promise<SourceText[]> {
-  const files = await listFiles(projectId);
+  const files = (await listFiles(projectId)).filter((file) => file.language !== 'watch');
   const texts = await Promise.all(files.map((file) => getFile(projectId, file.name)));
   return texts.map(({ name, text }) => ({ name, text }));
 }

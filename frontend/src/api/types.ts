@@ -81,10 +81,10 @@ export interface Diagnostic {
   span: Span | null;
 }
 
-/** What a project file holds, by its suffix: STL, SCL or a symbol table. */
-export type FileLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'symbols';
+/** What a project file holds, by its suffix: STL, SCL, LAD/FBD, a symbol table or a watch table. */
+export type FileLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'symbols' | 'watch' | 'cpu';
 /** The language a block is written in: its file's (LAD and FBD blocks are kept as text). */
-export type BlockLanguage = Exclude<FileLanguage, 'symbols'>;
+export type BlockLanguage = Exclude<FileLanguage, 'symbols' | 'watch' | 'cpu'>;
 
 /** One source file of a project (`GET /api/projects/{id}/files`). */
 export interface FileInfo {

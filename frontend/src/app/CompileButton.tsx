@@ -1,4 +1,5 @@
 import { useTranslation } from 'react-i18next';
+import { useDiagnosticCounts } from '../panels/DiagnosticsList';
 import { useActiveProject } from '../projects/ActiveProject';
 import { Icon, type IconProps } from '../ui/icons';
 import { useCompile } from './compile';
@@ -41,15 +42,20 @@ export function CompileButton() {
   );
 }
 
-/** The status bar's report of the last compile; a live region, so screen readers say it. */
+/**
+ * The status bar's report of the last compile; a live region, so screen readers say it. Once
+ * compiled, its counts are the Diagnostics panel's, kept current as the editors check what is
+ * typed (never a snapshot that disagrees with the list below).
+ */
 export function CompileStatus() {
   const { t } = useTranslation();
   const { result, compiling } = useCompile();
+  const counts = useDiagnosticCounts();
   let text = '';
   if (compiling) text = t('shortcuts.compile.busy');
   else if (result?.failed) text = t('shortcuts.compile.failed', { code: result.code });
-  else if (result) text = t('shortcuts.compile.result', { errors: result.errors, warnings: result.warnings });
-  const state = result === null || result.failed ? 'none' : result.errors > 0 ? 'errors' : 'ok';
+  else if (result) text = t('shortcuts.compile.result', { errors: counts.errors, warnings: counts.warnings });
+  const state = result === null || result.failed ? 'none' : counts.errors > 0 ? 'errors' : 'ok';
   return (
     <span className="status-item" role="status" data-testid="compile-status" data-state={compiling ? 'busy' : state}>
       {text}

@@ -51,6 +51,8 @@ export const SHORTCUTS: readonly Shortcut[] = [
   { id: 'find', keys: [['Ctrl', 'F']], mac: [['⌘', 'F']], labelKey: 'shortcuts.action.find', scope: 'editor' },
   { id: 'replace', keys: [['Ctrl', 'H']], mac: [['⌥', '⌘', 'F']], labelKey: 'shortcuts.action.replace', scope: 'editor' },
   { id: 'commands', keys: [['F1']], labelKey: 'shortcuts.action.commands', scope: 'editor' },
+  { id: 'references', keys: [['Shift', 'F12']], mac: [['⇧', 'F12']], labelKey: 'xref.shortcut.references', scope: 'editor' },
+  { id: 'renameSymbol', keys: [['F2']], labelKey: 'xref.shortcut.rename', scope: 'editor' },
   { id: 'open', keys: [['Enter']], labelKey: 'shortcuts.action.open', scope: 'tree' },
   { id: 'rename', keys: [['F2']], labelKey: 'shortcuts.action.rename', scope: 'tree' },
   { id: 'delete', keys: [['Delete']], labelKey: 'shortcuts.action.delete', scope: 'tree' },

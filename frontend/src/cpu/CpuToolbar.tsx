@@ -9,6 +9,7 @@ import { CpuStateIndicator } from './CpuStateIndicator';
 import { cpuModeOf } from './cpuState';
 import { useMonitor, useSession } from './SessionContext';
 import '../styles/monitor.css';
+import { SessionLimit } from './SessionLimit';
 import { useProblemText } from './useProblemText';
 
 type TimeMode = SetTime['mode'];
@@ -244,7 +245,17 @@ export function CpuToolbar() {
       {shown ? (
         <div className="cpu-problem" role="alert" data-testid="cpu-problem">
           <code className="error-code">{shown.code}</code>
-          <span className="cpu-problem__text">{problemText(shown)}</span>
+          <div className="cpu-problem__body">
+            <span className="cpu-problem__text">{problemText(shown)}</span>
+            {shown.code === 'MON610' ? (
+              <SessionLimit
+                onRetry={() => {
+                  report(null);
+                  void download();
+                }}
+              />
+            ) : null}
+          </div>
           <button type="button" className="icon-button cpu-problem__close" aria-label={t('common.close')} onClick={dismiss}>
             <CloseIcon />
           </button>

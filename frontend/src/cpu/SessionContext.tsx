@@ -21,17 +21,25 @@ import {
 } from '../api/monitorClient';
 import {
   createProjectSession,
-  deleteSession,
   downloadProgram,
+  findProjectSession,
   getSessionDiagnostics,
   projectSources,
   type SessionOut,
   type SourceText,
 } from '../api/sessions';
 import { flushFile } from '../editor/autosave';
+import { breakpoints } from '../editor/monitoring/breakpointStore';
 import { useActiveProject } from '../projects/ActiveProject';
+import { adoptSessionBreakpoints } from './reattach';
 
-/** The simulation session the workbench monitors: one at a time, made by a download. */
+/**
+ * The simulation session the workbench monitors: the running session of the active project.
+ * It belongs to the project, not to this page: opening the project (a reload, a second tab,
+ * another browser) attaches to the session the server runs for it, with its CPU state, forces,
+ * breakpoints and trend; leaving the page or the project leaves the session running until the
+ * server's idle time closes it. A download makes one when the project has none.
+ */
 export interface ActiveSession {
   id: string;
   projectId: number;
@@ -87,6 +95,8 @@ function defaultClient(session: ActiveSession): MonitorClient {
   return new MonitorClient({
     url: socketUrl(session.websocket),
     loadDiagnostics: () => getSessionDiagnostics(session.id),
+    // The breakpoints the session holds show again in the editors (another browser has none).
+    onSessionState: (state) => adoptSessionBreakpoints(breakpoints, session.projectId, state.breakpoints),
   });
 }
 
@@ -94,8 +104,19 @@ function fromOut(out: SessionOut, projectId: number): ActiveSession {
   return { id: out.id, projectId, blocks: out.blocks, websocket: out.websocket };
 }
 
+/** Where a tab remembers the project whose session it monitors, for the page after a reload. */
+export const ATTACHED_PROJECT_KEY = 'nasaq.session.project';
+
+function tabStorage(): Storage | null {
+  try {
+    return typeof sessionStorage === 'undefined' ? null : sessionStorage;
+  } catch {
+    return null;
+  }
+}
+
 export function SessionProvider({ children, createClient = defaultClient }: SessionProviderProps) {
-  const { projectId } = useActiveProject();
+  const { projectId, setProjectId } = useActiveProject();
   const [session, setSession] = useState<ActiveSession | null>(null);
   const [client, setClient] = useState<MonitorClient | null>(null);
   const [sources, setSources] = useState<readonly SourceText[]>([]);
@@ -103,22 +124,88 @@ export function SessionProvider({ children, createClient = defaultClient }: Sess
   const [problem, setProblem] = useState<Problem | null>(null);
   const current = useRef<{ session: ActiveSession | null; client: MonitorClient | null }>({ session: null, client: null });
   const busy = useRef(false);
+  /** The project whose session this page wants (the active one). */
+  const wantedProject = useRef<number | null>(projectId);
+
+  /** Monitors `out` (closing the socket of the session monitored before, which runs on). */
+  const attach = useCallback(
+    async (out: SessionOut, project: number) => {
+      const active = fromOut(out, project);
+      current.current.client?.close();
+      const made = createClient(active);
+      current.current = { session: active, client: made };
+      setSession(active);
+      setClient(made);
+      made.connect();
+      const texts = await projectSources(project).catch(() => []);
+      if (current.current.session === active) setSources(texts);
+    },
+    [createClient],
+  );
+
+  const detach = useCallback(() => {
+    current.current.client?.close();
+    current.current = { session: null, client: null };
+    setSession(null);
+    setClient(null);
+    setSources([]);
+  }, []);
+
+  /** Attaches to the project's running session, if the server runs one. */
+  const reattach = useCallback(
+    async (project: number) => {
+      const found = await findProjectSession(project).catch(() => null);
+      // A download may have started meanwhile, or the user moved to another project.
+      if (!found || busy.current || wantedProject.current !== project) return;
+      if (current.current.session?.id === found.id && current.current.client?.getState().connection !== 'closed') return;
+      await attach(found, project);
+    },
+    [attach],
+  );
+
+  // A reloaded page works on the project it was monitoring: that project is active again and
+  // its session attached (the tab's own storage: a new tab starts with the project it opens).
+  useEffect(() => {
+    const saved = Number(tabStorage()?.getItem(ATTACHED_PROJECT_KEY) ?? NaN);
+    if (projectId === null && Number.isInteger(saved) && saved > 0) setProjectId(saved);
+  }, []); // only when the page starts
+  useEffect(() => {
+    try {
+      if (session) tabStorage()?.setItem(ATTACHED_PROJECT_KEY, String(session.projectId));
+    } catch {
+      // A full or blocked storage: a reload then starts without a project, as before.
+    }
+  }, [session]);
+
+  useEffect(() => {
+    wantedProject.current = projectId;
+    const running = current.current.session;
+    if (running && running.projectId === projectId) return;
+    // Another project: its session runs on (it belongs to its project); this one's is found.
+    if (running) detach();
+    if (projectId !== null) void reattach(projectId);
+  }, [projectId, detach, reattach]);
+
+  // A session closed under this page (a download in another tab replaced it, closed from the
+  // session list, idle): the project's current session, if any, is attached instead.
+  useEffect(() => {
+    if (!client) return;
+    return client.subscribe(() => {
+      const { connection, closedBy } = client.getState();
+      const running = current.current;
+      if (connection !== 'closed' || !closedBy || running.client !== client || !running.session) return;
+      if (busy.current) return;
+      void reattach(running.session.projectId);
+    });
+  }, [client, reattach]);
 
   const start = useCallback(
     async (project: number) => {
-      // The old CPU runs on until the new program has compiled, as on a real PLC.
-      const created = fromOut(await createProjectSession(project), project);
-      const old = current.current;
-      old.client?.close();
-      if (old.session) void deleteSession(old.session.id).catch(() => undefined);
-      const made = createClient(created);
-      current.current = { session: created, client: made };
-      setSession(created);
-      setClient(made);
-      made.connect();
-      setSources(await projectSources(project).catch(() => []));
+      // The old CPU runs on until the new program has compiled, as on a real PLC; the server
+      // then closes the project's older session.
+      await attach(await createProjectSession(project), project);
     },
-    [createClient],
+    [attach],
   );
 
   const download = useCallback(async () => {
@@ -188,20 +275,6 @@ export function SessionProvider({ children, createClient = defaultClient }: Sess
     window.addEventListener('keydown', onKey);
     return () => window.removeEventListener('keydown', onKey);
   }, [download]);
-
-  // Leaving the page ends the session rather than leaving it to the idle timeout.
-  useEffect(() => {
-    const onHide = () => {
-      const running = current.current.session;
-      if (!running) return;
-      current.current.client?.close();
-      void fetch(`/api/sessions/${encodeURIComponent(running.id)}`, { method: 'DELETE', keepalive: true }).catch(
-        () => undefined,
-      );
-    };
-    window.addEventListener('pagehide', onHide);
-    return () => window.removeEventListener('pagehide', onHide);
-  }, []);
 
   useEffect(() => () => current.current.client?.close(), []);
 

@@ -1,7 +1,7 @@
 /**
  * What the monitoring panels learn from the downloaded sources without asking the compiler:
- * the symbol table (to name addresses) and which input and output bytes the program uses (to
- * show them in the I/O panel). The compiler remains the authority; this is for display only.
+ * the symbol table (to name addresses; which I/O the program uses is `io/ioUsage.ts`). The
+ * compiler remains the authority; this is for display only.
  *
  * Symbol table formats as in backend/nasaq/lang/stl/symbols.py: `.sdf` (quoted fields), `.csv`
  * (`,` or `;`), `.seq` (tab-separated, optionally led by `126`), `.asc` (`126,` then columns of
@@ -87,51 +87,4 @@ export function symbolsByAddress(symbols: readonly SymbolEntry[]): Map<string, S
   const map = new Map<string, SymbolEntry>();
   for (const symbol of symbols) if (!map.has(symbol.address)) map.set(symbol.address, symbol);
   return map;
-}
-
-const SIZE_BYTES: Record<string, number> = { '': 1, X: 1, B: 1, W: 2, D: 4 };
-
-// An I/O address in code: `I 0.0`, `E0.1`, `QB 4`, `AW4`, `%Q4.0`, `PIW 256`. A bit needs its
-// `.n`, a byte/word/double word its size letter, so words like `E001:` or `A` (AND) never count.
-const IN_CODE = /(?<![\w#.%"'])%?(P?)([IEQA])(?:([BWD])[ \t]*(\d+)|[ \t]*(\d+)\.[0-7])(?![\w.])/gi;
-
-export interface IoBytes {
-  inputs: number[];
-  outputs: number[];
-}
-
-/**
- * The input and output bytes the sources name (in code or in the symbol table), below
- * `limit`: the digital I/O of a small PLC; analog values (PIW256 …) are not switches or lamps.
- */
-export function usedIoBytes(sources: readonly SourceText[], limit = 16): IoBytes {
-  const inputs = new Set<number>();
-  const outputs = new Set<number>();
-  const add = (area: string, size: string, byte: number) => {
-    const target = area === 'I' || area === 'E' ? inputs : outputs;
-    for (let k = 0; k < (SIZE_BYTES[size] ?? 1); k++) if (byte + k < limit) target.add(byte + k);
-  };
-  for (const source of sources) {
-    const lower = source.name.toLowerCase();
-    if (/\.(?:awl|stl|scl|lad|fbd)$/.test(lower)) {
-      for (const match of source.text.matchAll(IN_CODE)) {
-        const size = (match[3] ?? '').toUpperCase();
-        const byte = Number(match[4] ?? match[5]);
-        add((match[2] ?? '').toUpperCase(), size, byte);
-      }
-    }
-    for (const symbol of parseSymbolTable(source.name, source.text)) {
-      const match = /^([IQ])([BWD]?)(\d+)/.exec(symbol.address);
-      if (match) add(match[1]!, match[2]!, Number(match[3]));
-    }
-  }
-  const sorted = (set: Set<number>) => [...set].sort((a, b) => a - b);
-  return { inputs: sorted(inputs), outputs: sorted(outputs) };
-}
-
-/** The bytes the I/O panel shows: 0 to 3 always, and any other byte the program uses. */
-export function shownIoBytes(used: IoBytes, always = 4): IoBytes {
-  const base = Array.from({ length: always }, (_, i) => i);
-  const join = (extra: number[]) => [...new Set([...base, ...extra])].sort((a, b) => a - b);
-  return { inputs: join(used.inputs), outputs: join(used.outputs) };
 }

@@ -1,6 +1,7 @@
 import { useCallback } from 'react';
 import { useTranslation } from 'react-i18next';
 import type { Problem } from '../api/monitorClient';
+import { translateParams } from '../i18n/phraseParams';
 
 /**
  * A problem (socket error, API error, client failure) as text in the interface language: the
@@ -11,7 +12,7 @@ export function useProblemText(): (problem: Pick<Problem, 'key' | 'message' | 'p
   return useCallback(
     (problem) => {
       const key = `problems.${problem.key}`;
-      return i18n.exists(key) ? t(key, { ...problem.params }) : problem.message;
+      return i18n.exists(key) ? t(key, translateParams(t, (k) => i18n.exists(k), problem.params)) : problem.message;
     },
     [t, i18n],
   );

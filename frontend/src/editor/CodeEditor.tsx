@@ -7,7 +7,7 @@ import { loadMonaco, type MonacoApi } from './monaco/load';
 import { THEME_NAME } from './monaco/constants';
 import { bindModel, type ModelSource } from './intellisense/modelRegistry';
 
-export type SourceLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'symbols';
+export type SourceLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'symbols' | 'cpu';
 
 /** Monaco's language of each source language: LAD and FBD share their text format, symbol
  * tables are plain CSV-like text. */
@@ -17,6 +17,7 @@ const MODEL_LANGUAGE: Record<SourceLanguage, string> = {
   lad: 'lad',
   fbd: 'lad',
   symbols: 'plaintext',
+  cpu: 'plaintext', // cpu.properties: key = value lines, shown as a page (cpuprops/)
 };
 
 /** A place the editor should show (see `RevealRequest` of the tabs): a new object each time. */

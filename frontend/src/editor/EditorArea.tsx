@@ -5,13 +5,15 @@ import { EditorEmptyState } from './EditorEmptyState';
 import { EditorTabStrip } from './EditorTabStrip';
 import { DbEditorView } from '../dbeditor/DbEditorView';
 import { SymbolTableTab } from '../symbols/SymbolTableTab';
+import { CpuPropertiesTab } from '../cpuprops/CpuPropertiesTab';
 import { useEditorTabs, type DbTab, type EditorTab, type SourceTab } from './EditorTabsContext';
 import { SourceView } from './SourceView';
 import { StartPage } from './StartPage';
+import { hasPendingEdits, holdsUnsavedText } from './unsaved';
 
 /**
  * Saves every file tab when the page is hidden or closed (requests that outlive the page), and
- * asks before leaving while a text could not be saved.
+ * asks before leaving while a text is not saved yet (pending, being saved, refused or failed).
  */
 function useSaveOnLeave(tabs: readonly EditorTab[]) {
   const tabsRef = useRef(tabs);
@@ -23,10 +25,11 @@ function useSaveOnLeave(tabs: readonly EditorTab[]) {
     };
     const onBeforeUnload = (event: BeforeUnloadEvent) => {
       save();
-      const unsaved = tabsRef.current.some(
-        (tab) => tab.kind === 'source' && !!tab.file && (tab.save.status === 'conflict' || tab.save.status === 'failed'),
-      );
-      if (unsaved) event.preventDefault();
+      if (tabsRef.current.some(holdsUnsavedText) || hasPendingEdits()) {
+        event.preventDefault();
+        // Older browsers ask only when a return value is set.
+        event.returnValue = '';
+      }
     };
     window.addEventListener('pagehide', save);
     window.addEventListener('beforeunload', onBeforeUnload);
@@ -62,6 +65,8 @@ export function EditorArea() {
         {sources.map((tab) =>
           tab.language === 'symbols' ? (
             <SymbolTableTab key={tab.id} tab={tab} active={tab.id === activeId} />
+          ) : tab.language === 'cpu' ? (
+            <CpuPropertiesTab key={tab.id} tab={tab} active={tab.id === activeId} />
           ) : (
             <SourceView key={tab.id} tab={tab} active={tab.id === activeId} />
           ),

@@ -1,17 +1,23 @@
+import { useState } from 'react';
 import { useTranslation } from 'react-i18next';
+import { ConfirmDialog } from '../projects/TreeDialogs';
 import { CloseIcon, DocumentIcon, WarningIcon } from '../ui/icons';
 import { useEditorTabs, type EditorTab } from './EditorTabsContext';
+import { closingLosesText } from './unsaved';
 
 export function useTabTitle(): (tab: EditorTab) => string {
   const { t } = useTranslation();
   return (tab) => (tab.kind === 'source' || tab.kind === 'db' ? tab.name : t(`editor.tabs.${tab.kind}`));
 }
 
-/** The row of open editors; each has its own close button. */
+/** The row of open editors; each has its own close button, which asks first when closing would
+ * lose text the autosave could not save. */
 export function EditorTabStrip() {
   const { t } = useTranslation();
   const { tabs, activeId, activate, close } = useEditorTabs();
   const titleOf = useTabTitle();
+  const [asking, setAsking] = useState<EditorTab | null>(null);
+  const requestClose = (tab: EditorTab) => (closingLosesText(tab) ? setAsking(tab) : close(tab.id));
 
   return (
     <div className="editor-tabs">
@@ -52,7 +58,7 @@ export function EditorTabStrip() {
                 aria-label={t('editor.closeTab', { title })}
                 title={t('editor.closeTab', { title })}
                 data-testid={`editor-tab-close-${tab.id}`}
-                onClick={() => close(tab.id)}
+                onClick={() => requestClose(tab)}
               >
                 <CloseIcon size={12} />
               </button>
@@ -60,6 +66,20 @@ export function EditorTabStrip() {
           );
         })}
       </ul>
+      {asking ? (
+        <ConfirmDialog
+          title={t('editor.closeUnsaved.title', { name: titleOf(asking) })}
+          confirmLabel={t('editor.closeUnsaved.confirm')}
+          testId="close-unsaved-dialog"
+          onClose={() => setAsking(null)}
+          onConfirm={async () => {
+            close(asking.id);
+            setAsking(null);
+          }}
+        >
+          <p className="dialog__text">{t('editor.closeUnsaved.text', { name: titleOf(asking) })}</p>
+        </ConfirmDialog>
+      ) : null}
     </div>
   );
 }

@@ -9,15 +9,17 @@ import type { Problem } from '../api/monitorClient';
 import { CodeEditor, LINE_HEIGHT, type RenderEditorExtras } from './CodeEditor';
 import { EditorMonitoring } from './monitoring/EditorMonitoring';
 import { MonitorToggle, monitorToggleOf, rememberMonitorToggle } from './monitoring/MonitorToggle';
+import { requestSymbolRow } from '../symbols/symbolSelection';
 import { findDefinition } from './definitions';
 import { outlines } from './intellisense/outlineStore';
 import { useEditorTabs, type SaveStatus, type SourceTab } from './EditorTabsContext';
 import { useOpenProjectFile } from './useOpenProjectFile';
 import { useSourceFile } from './useSourceFile';
 import { LadSourceViews, StlSourceViews, type DiagramView } from '../lad/DiagramViews';
+import { XrefEditorActions } from '../xref/XrefEditorActions';
 import './source.css';
 
-const LANGUAGE_NAMES = { stl: 'STL', scl: 'SCL', lad: 'LAD', fbd: 'FBD' } as const;
+const LANGUAGE_NAMES = { stl: 'STL', scl: 'SCL', lad: 'LAD', fbd: 'FBD', cpu: 'CPU' } as const;
 
 /** How long "no definition here" stays in the status line. */
 const NOTICE_MS = 4000;
@@ -64,16 +66,19 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
   const fileRef = useRef(file);
   fileRef.current = file;
   const goToDefinition = useCallback(
-    (lineText: string, column: number) => {
+    async (lineText: string, column: number) => {
       const target = fileRef.current;
       if (!target) return;
       const blocks = projectContents.get(target.projectId)?.blocks ?? [];
-      const block = findDefinition(blocks, lineText, column, outlines.get(target.projectId)?.symbols);
+      // The symbols come with the project's outline, which may not have been read yet.
+      const outline = outlines.get(target.projectId) ?? (await outlines.ready(target.projectId));
+      const block = findDefinition(blocks, lineText, column, outline?.symbols);
       if (!block) {
         showNotice(t('editor.definition.notFound'));
         return;
       }
       const at = block.line != null ? { line: block.line } : null;
+      if ('symbol' in block && block.symbol) requestSymbolRow(target.projectId, block.file, block.symbol);
       openFile(target.projectId, block.file, at).catch(() => showNotice(t('editor.definition.openFailed', { name: block.file })));
     },
     [openFile, showNotice, t],
@@ -99,16 +104,19 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
   const renderExtras: RenderEditorExtras | undefined =
     file && codeLanguage
       ? (editor, monaco) => (
-          <EditorMonitoring
-            editor={editor}
-            monaco={monaco}
-            projectId={file.projectId}
-            file={file.path}
-            language={codeLanguage}
-            monitoring={monitoring && active}
-            lineHeight={LINE_HEIGHT}
-            onProblem={setMonitorProblem}
-          />
+          <>
+            <EditorMonitoring
+              editor={editor}
+              monaco={monaco}
+              projectId={file.projectId}
+              file={file.path}
+              language={codeLanguage}
+              monitoring={monitoring && active}
+              lineHeight={LINE_HEIGHT}
+              onProblem={setMonitorProblem}
+            />
+            <XrefEditorActions editor={editor} monaco={monaco} projectId={file.projectId} onNothing={showNotice} />
+          </>
         )
       : undefined;
 

@@ -1,11 +1,17 @@
-import { useId } from 'react';
+import { useId, useState } from 'react';
 import { useTranslation } from 'react-i18next';
+import { asApiError, type ApiError } from '../api/client';
+import { useApiErrorText } from '../i18n/useApiErrorText';
 import { useUiLanguage } from '../i18n/useDocumentLanguage';
+import { ExampleProjects } from '../examples/ExampleProjects';
+import { useActiveProject } from '../projects/ActiveProject';
+import { NewProjectDialog } from '../projects/NewProjectDialog';
+import { projectContents } from '../projects/projectContents';
 import { ComingBadge } from '../ui/ComingBadge';
 import { CheckIcon, DocumentIcon, NasaqMark } from '../ui/icons';
-import type { SourceLanguage } from './CodeEditor';
-import { useEditorTabs, type EditorTab } from './EditorTabsContext';
-import { SCL_EXAMPLE, STL_EXAMPLE } from './examples';
+import { useEditorTabs } from './EditorTabsContext';
+import { createStartSource, type StartLanguage } from './newSource';
+import { ProjectPickDialog } from './ProjectPickDialog';
 
 const WORKS_NOW = ['projects', 'stlScl', 'ladFbd', 'simulator', 'monitoring', 'languages', 'rtl', 'offline'] as const;
 const COMING = ['graph', 'lessons'] as const;
@@ -19,25 +25,51 @@ const STL_SAMPLE = `      A(
       AN    "Stop"         // I 0.1
       =     "Motor"`;
 
-const NEW_SOURCES: ReadonlyArray<{ language: SourceLanguage; extension: string; example: string }> = [
-  { language: 'stl', extension: 'awl', example: STL_EXAMPLE },
-  { language: 'scl', extension: 'scl', example: SCL_EXAMPLE },
-];
+const NEW_SOURCES: readonly StartLanguage[] = ['stl', 'scl'];
 
-/** `source1.awl`, or the first number no open tab uses yet. */
-function freeName(tabs: readonly EditorTab[], extension: string): string {
-  const taken = new Set(tabs.map((tab) => (tab.kind === 'source' ? tab.name.toLowerCase() : '')));
-  let number = 1;
-  while (taken.has(`source${number}.${extension}`)) number += 1;
-  return `source${number}.${extension}`;
+/**
+ * "New STL/SCL source": a file of the selected project (or of the one the user picks or creates),
+ * never a text that exists only in the browser and could not be saved.
+ */
+function useNewSource() {
+  const { openSource } = useEditorTabs();
+  const { projectId, setProjectId } = useActiveProject();
+  const [asking, setAsking] = useState<{ language: StartLanguage; stage: 'pick' | 'create' } | null>(null);
+  const [error, setError] = useState<ApiError | null>(null);
+
+  const createIn = async (target: number, language: StartLanguage) => {
+    const { info, text } = await createStartSource(target, language);
+    projectContents.ensure(target);
+    projectContents.putFile(target, info);
+    projectContents.reloadSoon(target);
+    setProjectId(target);
+    setAsking(null);
+    openSource({
+      name: info.name,
+      language,
+      text,
+      file: { projectId: target, path: info.name },
+      version: info.version,
+      dirty: false,
+    });
+  };
+
+  const start = (language: StartLanguage) => {
+    setError(null);
+    if (projectId === null) setAsking({ language, stage: 'pick' });
+    else createIn(projectId, language).catch((caught: unknown) => setError(asApiError(caught)));
+  };
+
+  return { start, asking, setAsking, createIn, error, setError };
 }
 
 /** The welcome page: what Nasaq is, what works today and what comes next. */
 export function StartPage() {
   const { t } = useTranslation();
   const { language, dir } = useUiLanguage();
-  const { tabs, openSource } = useEditorTabs();
+  const errorText = useApiErrorText();
   const titleId = useId();
+  const { start, asking, setAsking, createIn, error, setError } = useNewSource();
 
   return (
     <article className="start-page" dir={dir} lang={language} aria-labelledby={titleId} data-testid="start-page">
@@ -51,23 +83,41 @@ export function StartPage() {
           <div className="start-page__actions" role="group" aria-label={t('start.newSource.label')}>
             {NEW_SOURCES.map((source) => (
               <button
-                key={source.language}
+                key={source}
                 type="button"
                 className="button button--primary"
-                data-testid={`new-source-${source.language}`}
-                onClick={() =>
-                  openSource({
-                    name: freeName(tabs, source.extension),
-                    language: source.language,
-                    text: source.example,
-                  })
-                }
+                data-testid={`new-source-${source}`}
+                onClick={() => start(source)}
               >
                 <DocumentIcon />
-                {t(`start.newSource.${source.language}`)}
+                {t(`start.newSource.${source}`)}
               </button>
             ))}
           </div>
+          {error ? (
+            <p className="field__error" role="alert" data-testid="new-source-error">
+              <code className="error-code">{error.code}</code> <span>{errorText(error)}</span>
+            </p>
+          ) : null}
+          {asking?.stage === 'pick' ? (
+            <ProjectPickDialog
+              title={t(`start.newSource.${asking.language}`)}
+              onClose={() => setAsking(null)}
+              onChosen={(target) => createIn(target, asking.language)}
+              onCreateProject={() => setAsking({ ...asking, stage: 'create' })}
+            />
+          ) : null}
+          {asking?.stage === 'create' ? (
+            <NewProjectDialog
+              onClose={() => setAsking(null)}
+              onCreated={(project) => {
+                createIn(project.id, asking.language).catch((caught: unknown) => {
+                  setAsking(null);
+                  setError(asApiError(caught));
+                });
+              }}
+            />
+          ) : null}
         </div>
       </div>
 
@@ -106,6 +156,8 @@ export function StartPage() {
           </ul>
         </section>
       </div>
+
+      <ExampleProjects />
 
       <div className="start-page__columns">
         <section className="card" aria-labelledby={`${titleId}-steps`}>

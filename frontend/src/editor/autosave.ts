@@ -229,6 +229,14 @@ export function discardFile(projectId: number, path?: string): void {
   }
 }
 
+/** The server changed a file's text (a project-wide rename or its undo): its tabs take it. */
+export function reloadedFile(projectId: number, path: string, text: string, version: number): void {
+  for (const { file, saver } of running.values()) {
+    const ref = file();
+    if (ref && ref.projectId === projectId && ref.path === path) saver.reloaded(text, version);
+  }
+}
+
 /** A file was renamed on the server, which counts as a new version of it. */
 export function rebaseFile(projectId: number, path: string, version: number): void {
   for (const { file, saver } of running.values()) {

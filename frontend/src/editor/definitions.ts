@@ -60,6 +60,8 @@ export function findBlock(blocks: readonly TreeBlock[], reference: BlockReferenc
 export interface DefinitionTarget {
   file: string;
   line: number | null;
+  /** A symbol table's row: the symbol's name (the table view selects its row). */
+  symbol?: string;
 }
 
 /**
@@ -80,5 +82,5 @@ export function findDefinition(
   if (!('name' in reference) || !reference.name) return null;
   const name = reference.name.toLowerCase();
   const symbol = symbols.find((item) => item.name.toLowerCase() === name);
-  return symbol ? { file: symbol.file, line: symbol.line } : null;
+  return symbol ? { file: symbol.file, line: symbol.line, symbol: symbol.name } : null;
 }

@@ -9,6 +9,7 @@ export function languageOfFile(name: string): SourceLanguage | null {
   if (suffix === '.lad') return 'lad';
   if (suffix === '.fbd') return 'fbd';
   if (['.sdf', '.asc', '.seq', '.csv'].includes(suffix)) return 'symbols';
+  if (name.toLowerCase() === 'cpu.properties') return 'cpu'; // the CPU properties page
   return null;
 }
 

@@ -1,6 +1,8 @@
 import { useCallback } from 'react';
 import { getFile } from '../api/client';
 import { useEditorTabs } from './EditorTabsContext';
+import { isWatchTableName } from '../watchtables/format';
+import { openWatchTable } from '../watchtables/selection';
 import { languageOfFile } from './fileLanguage';
 
 export type OpenProjectFile = (
@@ -26,10 +28,14 @@ export function useOpenProjectFile(): OpenProjectFile {
         else activate(open.id);
         return;
       }
+      if (isWatchTableName(name)) {
+        openWatchTable(projectId, name); // a table opens in the Watch panel, as a VAT in its window
+        return;
+      }
       const file = await getFile(projectId, name);
       openSource({
         name: file.name,
-        language: languageOfFile(file.name) ?? file.language,
+        language: languageOfFile(file.name) ?? (file.language as Exclude<typeof file.language, 'watch'>),
         text: file.text,
         file: { projectId, path: file.name },
         version: file.version,

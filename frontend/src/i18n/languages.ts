@@ -30,6 +30,14 @@ import panelsEn from '../panels/locales/en.json';
 import panelsAr from '../panels/locales/ar.json';
 import panelsFa from '../panels/locales/fa.json';
 import panelsVi from '../panels/locales/vi.json';
+import phrasesEn from './phrases/en.json';
+import phrasesAr from './phrases/ar.json';
+import phrasesFa from './phrases/fa.json';
+import phrasesVi from './phrases/vi.json';
+import examplesEn from '../examples/locales/en.json';
+import examplesAr from '../examples/locales/ar.json';
+import examplesFa from '../examples/locales/fa.json';
+import examplesVi from '../examples/locales/vi.json';
 
 /** The interface languages, in the order the language switch lists them. */
 export const LANGUAGES = ['en', 'ar', 'fa', 'vi'] as const;
@@ -46,10 +54,10 @@ export const LANGUAGE_STORAGE_KEY = 'nasaq.lang';
  * its own top-level namespace and may add `problems.<key>` texts for the diagnostic codes it owns.
  */
 const FEATURES = {
-  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn],
-  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr],
-  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa],
-  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi],
+  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn, phrasesEn, examplesEn],
+  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr, phrasesAr, examplesAr],
+  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa, phrasesFa, examplesFa],
+  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi, phrasesVi, examplesVi],
 } as const;
 
 export type Catalogue = typeof en & { lad: typeof ladEn } & typeof cpuEn &
@@ -57,7 +65,9 @@ export type Catalogue = typeof en & { lad: typeof ladEn } & typeof cpuEn &
   typeof ioEn &
   typeof xrefEn &
   typeof cpuPropsEn &
-  typeof panelsEn;
+  typeof panelsEn &
+  typeof phrasesEn &
+  typeof examplesEn;
 
 type Tree = { [key: string]: unknown };
 

@@ -1,6 +1,7 @@
 import { useCallback } from 'react';
 import { useTranslation } from 'react-i18next';
 import type { ApiError } from '../api/client';
+import { translateParams } from './phraseParams';
 
 /**
  * Turns an API error into text for the interface language: the catalogue's
@@ -11,7 +12,7 @@ export function useApiErrorText(): (error: ApiError) => string {
   return useCallback(
     (error: ApiError) => {
       const key = `problems.${error.key}`;
-      return i18n.exists(key) ? t(key, { ...error.params }) : error.message;
+      return i18n.exists(key) ? t(key, translateParams(t, (k) => i18n.exists(k), error.params)) : error.message;
     },
     [t, i18n],
   );

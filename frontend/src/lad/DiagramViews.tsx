@@ -17,6 +17,7 @@ import type { Diagnostic } from '../api/types';
 import { CodeEditor } from '../editor/CodeEditor';
 import { useDiagnosticMessage } from '../editor/diagnosticMarkers';
 import { useEditorTabs, type SourceTab } from '../editor/EditorTabsContext';
+import { setPendingEdit } from '../editor/unsaved';
 import { useApiErrorText } from '../i18n/useApiErrorText';
 import { useUiLanguage } from '../i18n/useDocumentLanguage';
 import { projectContents } from '../projects/projectContents';
@@ -206,6 +207,12 @@ export function LadSourceViews({ tab, active, monitoring, onMonitorProblem, text
     const timer = setTimeout(() => void applyRef.current(), STL_APPLY_MS);
     return () => clearTimeout(timer);
   }, [stl]);
+  // Typed STL not yet taken back: a reload asks first (editor/unsaved).
+  const stlPending = !!stl && !stl.error && stl.text !== stl.original;
+  useEffect(() => {
+    setPendingEdit(`${tab.id}:stl`, stlPending);
+    return () => setPendingEdit(`${tab.id}:stl`, false);
+  }, [stlPending, tab.id]);
 
   const choose = useCallback(
     async (next: DiagramView) => {

@@ -1,9 +1,11 @@
 import { useMemo } from 'react';
 import { useTranslation } from 'react-i18next';
 import type { Diagnostic, Severity, Span } from '../api/types';
+import { countProblems } from '../app/compile';
 import { useOpenDiagnostic, useProjectDiagnostics } from '../editor/projectDiagnostics';
 import { CheckIcon, ErrorIcon, InfoIcon, WarningIcon } from '../ui/icons';
-import { CpuDiagnostics } from './CpuDiagnostics';
+import type { DiagnosticEntry } from '../api/monitor';
+import { CpuDiagnostics, useOpenCpuEntry } from './CpuDiagnostics';
 import { diagnosticsStore, useDiagnostics, type DiagnosticsStore } from './diagnosticsStore';
 
 type OpenDiagnostic = (diagnostic: Diagnostic) => boolean;
@@ -74,12 +76,15 @@ export function DiagnosticsList({
   store = diagnosticsStore,
   project = NONE,
   onOpen,
+  onOpenCpuEntry,
 }: {
   store?: DiagnosticsStore;
   /** The compiler's diagnostics of the active project (editor/projectDiagnostics). */
   project?: readonly Diagnostic[];
   /** Opens a diagnostic's file at its line. */
   onOpen?: OpenDiagnostic;
+  /** Opens the block of a CPU diagnostic buffer entry at its line. */
+  onOpenCpuEntry?: (entry: DiagnosticEntry) => boolean;
 }) {
   const { t } = useTranslation();
   const reported = useDiagnostics(store);
@@ -103,14 +108,26 @@ export function DiagnosticsList({
           ))}
         </ul>
       )}
-      <CpuDiagnostics />
+      <CpuDiagnostics onOpen={onOpenCpuEntry} />
     </div>
   );
 }
 
-/** The compiler's diagnostics of the active project and the reported ones, one count. */
+/**
+ * The errors and warnings the Diagnostics panel lists (the reported ones and the compiler's of
+ * the active project, as they are now): what the panel's tab and the status bar count, so the two
+ * always agree. Notes (info) are listed but not counted, as STEP 7 counts errors and warnings.
+ */
+export function useDiagnosticCounts(store: DiagnosticsStore = diagnosticsStore): { errors: number; warnings: number } {
+  const reported = useDiagnostics(store);
+  const project = useProjectDiagnostics();
+  return useMemo(() => countProblems([...reported, ...project]), [reported, project]);
+}
+
+/** The panel tab's number: the errors and warnings it lists. */
 export function useProblemCount(store: DiagnosticsStore = diagnosticsStore): number {
-  return useDiagnostics(store).length + useProjectDiagnostics().length;
+  const { errors, warnings } = useDiagnosticCounts(store);
+  return errors + warnings;
 }
 
 /**
@@ -120,5 +137,6 @@ export function useProblemCount(store: DiagnosticsStore = diagnosticsStore): num
 export function WorkbenchDiagnostics() {
   const project = useProjectDiagnostics();
   const open = useOpenDiagnostic();
-  return <DiagnosticsList project={project} onOpen={open} />;
+  const openEntry = useOpenCpuEntry();
+  return <DiagnosticsList project={project} onOpen={open} onOpenCpuEntry={openEntry} />;
 }

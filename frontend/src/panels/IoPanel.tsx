@@ -1,147 +1,91 @@
-import { memo, useMemo } from 'react';
+import { useMemo, useState } from 'react';
 import { useTranslation } from 'react-i18next';
 import type { WatchValue } from '../api/monitor';
-import type { MonitorCommand } from '../api/monitorClient';
-import { shownIoBytes, symbolsByAddress, symbolsOf, usedIoBytes, type SymbolEntry } from '../cpu/projectSymbols';
+import { symbolsByAddress, symbolsOf } from '../cpu/projectSymbols';
 import { useMonitor, useSession, useWatchEntries } from '../cpu/SessionContext';
+import { findScale } from '../io/analog';
+import { AnalogChannel } from '../io/AnalogChannel';
+import { DigitalByte } from '../io/DigitalByte';
+import { ioUsage, shownBytes, type AnalogWord } from '../io/ioUsage';
+import '../io/io.css';
 import { InfoIcon } from '../ui/icons';
+import { FORMAT_NAMES, type DisplayFormat } from './watchFormat';
 
-const BITS = [0, 1, 2, 3, 4, 5, 6, 7] as const;
+const WORD_FORMATS = ['dec', 'hex', 'bin'] as const satisfies readonly DisplayFormat[];
+type WordFormat = (typeof WORD_FORMATS)[number];
+const FORMAT_KEY = 'nasaq.io.format';
 
-/** The value of a watched byte as a number, or null while unknown. */
-function byteOf(value: WatchValue | undefined): number | null {
-  return value && value.error === null && typeof value.value === 'number' ? value.value & 0xff : null;
+function storedFormat(): WordFormat {
+  try {
+    const stored = localStorage.getItem(FORMAT_KEY);
+    return (WORD_FORMATS as readonly string[]).includes(stored ?? '') ? (stored as WordFormat) : 'dec';
+  } catch {
+    return 'dec';
+  }
 }
 
-interface BitProps {
-  address: string;
-  symbol: SymbolEntry | undefined;
-  on: boolean | null;
-  forced: boolean;
+/** The value of a watched byte or word as a number, or null while unknown. */
+function numberOf(value: WatchValue | undefined): number | null {
+  return value && value.error === null && typeof value.value === 'number' ? value.value : null;
 }
 
-type Command = (command: MonitorCommand) => Promise<unknown>;
+/** The watched entries' values, as one string (a new frame with the same values renders nothing). */
+function valuesKey(watch: Readonly<Record<string, WatchValue>>, entries: readonly string[]): string {
+  return entries.map((entry) => numberOf(watch[entry]) ?? '').join(',');
+}
+
+/** The watch entry that shows an analog word: inputs at the module (what set_input drives). */
+function analogEntry(word: AnalogWord, input: boolean): string {
+  return input ? `PIW${word.byte}` : `${word.peripheral ? 'P' : ''}QW${word.byte}`;
+}
+
+/** A WORD's pattern as the module's signed INT. */
+const signed = (value: number) => ((value & 0xffff) >= 0x8000 ? (value & 0xffff) - 0x10000 : value & 0xffff);
 
 /**
- * One input switch. Memoised, like the lamps: frames come up to 30 times a second and most of
- * them change no I/O bit, so only the bits whose props changed render again.
- */
-const InputBit = memo(function InputBit({
-  address,
-  symbol,
-  on,
-  forced,
-  disabled,
-  command,
-}: BitProps & { disabled: boolean; command: Command }) {
-  const { t } = useTranslation();
-  const name = symbol ? `${address} ${symbol.name}` : address;
-  // A forced input only changes by forcing it again; a free one is driven like a field device.
-  const onToggle = () =>
-    void command(forced ? { type: 'force', address, value: !on } : { type: 'set_input', address, value: !on });
-  const onForce = () =>
-    void command(forced ? { type: 'unforce', address } : { type: 'force', address, value: on === true });
-  return (
-    <div className={`io-bit io-bit--input${on ? ' io-bit--on' : ''}${forced ? ' io-bit--forced' : ''}`}>
-      <button
-        type="button"
-        role="switch"
-        aria-checked={on === true}
-        aria-label={name}
-        className="io-switch"
-        data-testid={`io-${address}`}
-        data-state={on === null ? 'unknown' : on ? 'on' : 'off'}
-        title={symbol?.comment ? `${name}: ${symbol.comment}` : name}
-        disabled={disabled}
-        onClick={onToggle}
-      >
-        <span className="io-switch__track" aria-hidden="true">
-          <span className="io-switch__knob" />
-        </span>
-      </button>
-      <span className="io-bit__foot">
-        <span className="io-bit__address" aria-hidden="true">
-          {address.slice(address.indexOf('.'))}
-        </span>
-        <button
-          type="button"
-          className="io-force"
-          aria-pressed={forced}
-          aria-label={t(forced ? 'io.unforceBit' : 'io.forceBit', { address })}
-          title={t(forced ? 'io.unforceBit' : 'io.forceBit', { address })}
-          data-testid={`io-force-${address}`}
-          disabled={disabled}
-          onClick={onForce}
-        >
-          F
-        </button>
-      </span>
-      {forced ? (
-        <span className="force-marker" data-testid={`io-forced-${address}`} title={t('watch.forced')}>
-          <span aria-hidden="true">F</span>
-          <span className="visually-hidden">{t('watch.forced')}</span>
-        </span>
-      ) : null}
-    </div>
-  );
-});
-
-const OutputBit = memo(function OutputBit({ address, symbol, on, forced }: BitProps) {
-  const { t } = useTranslation();
-  const name = symbol ? `${address} ${symbol.name}` : address;
-  const state = on === null ? t('io.unknown') : on ? t('io.on') : t('io.off');
-  return (
-    <div className={`io-bit io-bit--output${forced ? ' io-bit--forced' : ''}`}>
-      <span
-        role="img"
-        className={`io-lamp${on ? ' io-lamp--on' : ''}`}
-        data-testid={`io-${address}`}
-        data-state={on === null ? 'unknown' : on ? 'on' : 'off'}
-        aria-label={`${name}: ${state}`}
-        title={symbol?.comment ? `${name}: ${symbol.comment}` : name}
-      />
-      <span className="io-bit__address" aria-hidden="true">
-        {address.slice(address.indexOf('.'))}
-      </span>
-      {forced ? (
-        <span className="force-marker" data-testid={`io-forced-${address}`} title={t('watch.forced')}>
-          <span aria-hidden="true">F</span>
-          <span className="visually-hidden">{t('watch.forced')}</span>
-        </span>
-      ) : null}
-    </div>
-  );
-});
-
-/** The watched bytes' values, as one string (a new frame with the same values renders nothing). */
-function bytesKey(watch: Readonly<Record<string, WatchValue>>, entries: readonly string[]): string {
-  return entries.map((entry) => byteOf(watch[entry]) ?? '').join(',');
-}
-
-/**
- * The I/O panel, like the input and output modules of PLCSIM: the input bytes as switches
- * (click: `set_input`; F: force the bit, or remove its force) and the output bytes as lamps.
- * IB0..IB3 and QB0..QB3 are always there, and any other I/O byte the program uses.
+ * The I/O panel, like the input and output modules of PLCSIM: the digital bytes the program uses
+ * (all of them on request) as switches and lamps with their symbols, and its analog words as
+ * sliders (inputs) and meters (outputs), words in the chosen format. Inputs are driven at the
+ * simulated module (`set_input`) and hold until changed, as a watch table's modify of an input
+ * does (backend/nasaq/cpu/COMPATIBILITY.md).
  */
 export function IoPanel() {
   const { t } = useTranslation();
   const { session, sources, command } = useSession();
   const connection = useMonitor((state) => state.connection);
+  const [all, setAll] = useState(false);
+  const [format, setFormat] = useState<WordFormat>(storedFormat);
 
-  const symbols = useMemo(() => symbolsByAddress(symbolsOf(sources)), [sources]);
-  const bytes = useMemo(() => shownIoBytes(usedIoBytes(sources)), [sources]);
-  // The switches show the peripheral inputs (what set_input drives); the lamps the outputs.
+  const symbolList = useMemo(() => symbolsOf(sources), [sources]);
+  const symbols = useMemo(() => symbolsByAddress(symbolList), [symbolList]);
+  const usage = useMemo(() => ioUsage(sources), [sources]);
+  const inputs = useMemo(() => shownBytes(usage.inputs, all), [usage, all]);
+  const outputs = useMemo(() => shownBytes(usage.outputs, all), [usage, all]);
+  const scales = useMemo(() => {
+    const map = new Map<string, ReturnType<typeof findScale>>();
+    for (const word of [...usage.analogInputs, ...usage.analogOutputs]) {
+      const named = symbols.get(word.address) ?? symbols.get(word.address.replace(/^P/, ''));
+      map.set(word.address, findScale(sources, named ? [word.address, `"${named.name}"`] : [word.address]));
+    }
+    return map;
+  }, [usage, symbols, sources]);
+
   const entries = useMemo(
-    () => [...bytes.inputs.map((byte) => `PIB${byte}`), ...bytes.outputs.map((byte) => `QB${byte}`)],
-    [bytes],
+    () => [
+      ...inputs.map((byte) => `PIB${byte}`),
+      ...outputs.map((byte) => `QB${byte}`),
+      ...usage.analogInputs.map((word) => analogEntry(word, true)),
+      ...usage.analogOutputs.map((word) => analogEntry(word, false)),
+    ],
+    [inputs, outputs, usage],
   );
   useWatchEntries('io-panel', entries);
-  // Strings, so that the panel renders again only when a shown byte or a force changed.
-  const values = useMonitor((state) => bytesKey(state.watch, entries));
+  // Strings, so that the panel renders again only when a shown value or a force changed.
+  const values = useMonitor((state) => valuesKey(state.watch, entries));
   const forcesKey = useMonitor((state) =>
     (state.cpu?.forced ?? []).map((force) => `${force.address}=${force.value}`).join(','),
   );
-  const byteValues = useMemo(() => {
+  const numbers = useMemo(() => {
     const parts = values.split(',');
     return new Map(entries.map((entry, index) => [entry, parts[index] ? Number(parts[index]) : null]));
   }, [entries, values]);
@@ -170,61 +114,92 @@ export function IoPanel() {
     );
   }
 
-  const online = connection === 'open';
-  const bitOf = (byte: number | null, bit: number) => (byte === null ? null : ((byte >> bit) & 1) === 1);
+  const disabled = connection !== 'open';
+  const wordForced = (area: 'I' | 'Q', byte: number) =>
+    [...forced.keys()].some((address) => address.startsWith(`${area}${byte}.`) || address.startsWith(`${area}${byte + 1}.`));
+  const chooseFormat = (value: WordFormat) => {
+    setFormat(value);
+    try {
+      localStorage.setItem(FORMAT_KEY, value);
+    } catch {
+      // Private mode: the choice lasts for this page only.
+    }
+  };
+  const bytesGroup = (input: boolean, bytes: readonly number[]) => (
+    <section className="io-group" aria-label={t(input ? 'io.inputs' : 'io.outputs')} data-testid={`io-group-${input ? 'inputs' : 'outputs'}`}>
+      <h3 className="io-group__title">{t(input ? 'io.inputs' : 'io.outputs')}</h3>
+      <div className="io-group__items">
+        {bytes.length === 0 ? <p className="io-group__none">{t('io.noneUsed')}</p> : null}
+        {bytes.map((byte) => (
+          <DigitalByte
+            key={byte}
+            input={input}
+            byte={byte}
+            value={numbers.get(`${input ? 'PIB' : 'QB'}${byte}`) ?? null}
+            symbols={symbols}
+            forced={forced}
+            format={format}
+            disabled={disabled}
+            command={command}
+          />
+        ))}
+      </div>
+    </section>
+  );
+  const analogGroup = (input: boolean, words: readonly AnalogWord[]) =>
+    words.length === 0 ? null : (
+      <section
+        className="io-group"
+        aria-label={t(input ? 'io.analogInputs' : 'io.analogOutputs')}
+        data-testid={`io-group-analog-${input ? 'inputs' : 'outputs'}`}
+      >
+        <h3 className="io-group__title">{t(input ? 'io.analogInputs' : 'io.analogOutputs')}</h3>
+        <div className="io-group__items">
+          {words.map((word) => {
+            const raw = numbers.get(analogEntry(word, input)) ?? null;
+            return (
+              <AnalogChannel
+                key={word.address}
+                input={input}
+                word={word}
+                symbol={symbols.get(word.address) ?? symbols.get(word.address.replace(/^P/, ''))}
+                raw={raw === null ? null : signed(raw)}
+                scale={scales.get(word.address) ?? null}
+                forced={wordForced(input ? 'I' : 'Q', word.byte)}
+                format={format}
+                disabled={disabled}
+                command={command}
+              />
+            );
+          })}
+        </div>
+      </section>
+    );
 
   return (
     <div className="io-panel" data-testid="io-panel">
-      <section className="io-group" aria-label={t('io.inputs')}>
-        <h3 className="io-group__title">{t('io.inputs')}</h3>
-        {bytes.inputs.map((byte) => {
-          const value = byteValues.get(`PIB${byte}`) ?? null;
-          return (
-            <div className="io-byte" key={byte} role="group" aria-label={`IB${byte}`} dir="ltr">
-              <span className="io-byte__name">IB{byte}</span>
-              {BITS.map((bit) => {
-                const address = `I${byte}.${bit}`;
-                const isForced = forced.has(address);
-                const on = isForced ? forced.get(address)! : bitOf(value, bit);
-                return (
-                  <InputBit
-                    key={bit}
-                    address={address}
-                    symbol={symbols.get(address)}
-                    on={on}
-                    forced={isForced}
-                    disabled={!online}
-                    command={command}
-                  />
-                );
-              })}
-            </div>
-          );
-        })}
-      </section>
-      <section className="io-group" aria-label={t('io.outputs')}>
-        <h3 className="io-group__title">{t('io.outputs')}</h3>
-        {bytes.outputs.map((byte) => {
-          const value = byteValues.get(`QB${byte}`) ?? null;
-          return (
-            <div className="io-byte" key={byte} role="group" aria-label={`QB${byte}`} dir="ltr">
-              <span className="io-byte__name">QB{byte}</span>
-              {BITS.map((bit) => {
-                const address = `Q${byte}.${bit}`;
-                return (
-                  <OutputBit
-                    key={bit}
-                    address={address}
-                    symbol={symbols.get(address)}
-                    on={bitOf(value, bit)}
-                    forced={forced.has(address)}
-                  />
-                );
-              })}
-            </div>
-          );
-        })}
-      </section>
+      <div className="io-toolbar">
+        <label className="io-toolbar__item" title={t('io.showAllHint')}>
+          <input type="checkbox" checked={all} onChange={(event) => setAll(event.target.checked)} data-testid="io-show-all" />
+          {t('io.showAll')}
+        </label>
+        <label className="io-toolbar__item">
+          {t('io.format')}
+          <select value={format} onChange={(event) => chooseFormat(event.target.value as WordFormat)} data-testid="io-format">
+            {WORD_FORMATS.map((value) => (
+              <option key={value} value={value}>
+                {FORMAT_NAMES[value]}
+              </option>
+            ))}
+          </select>
+        </label>
+      </div>
+      <div className="io-panel__groups">
+        {bytesGroup(true, inputs)}
+        {bytesGroup(false, outputs)}
+        {analogGroup(true, usage.analogInputs)}
+        {analogGroup(false, usage.analogOutputs)}
+      </div>
     </div>
   );
 }

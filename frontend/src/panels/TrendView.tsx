@@ -8,8 +8,8 @@ import { useProblemText } from '../cpu/useProblemText';
 import { useActiveProject } from '../projects/ActiveProject';
 import { CloseIcon, PlusIcon } from '../ui/icons';
 import { TREND_COLORS } from './trendColors';
+import { trendValueText } from './trendLayout';
 import { useStoredList } from './useStoredList';
-import { numericValue } from './watchFormat';
 
 const TrendChart = lazy(() => import('./TrendChart'));
 
@@ -23,7 +23,9 @@ export const trendStorageKey = (projectId: number | null) => `nasaq.trend.${proj
 
 /**
  * The trend: the chosen entries sampled at the end of every scan, plotted against the simulated
- * time (zoom by dragging), with the samples as CSV from the server.
+ * time (zoom by dragging), with the samples as CSV from the server. The session records the
+ * trend, not the page: after a reload the same entries come back with the samples recorded so
+ * far, and a page with no entries of its own shows the ones the session records.
  */
 export function TrendView() {
   const { t } = useTranslation();
@@ -38,7 +40,13 @@ export function TrendView() {
   const connection = useMonitor((state) => state.connection);
   const samples = useMonitor((state) => state.trend);
   const types = useMonitor((state) => state.trendTypes);
+  const sessionTrend = useMonitor((state) => state.sessionTrend);
   const key = entries.join('\n');
+
+  // Another tab or browser attached to the session: show the trend it records (with its history).
+  useEffect(() => {
+    if (sessionTrend.length > 0) setEntries((items) => (items.length === 0 ? [...sessionTrend] : items));
+  }, [sessionTrend, setEntries]);
 
   useEffect(() => {
     if (!client) return;
@@ -64,7 +72,15 @@ export function TrendView() {
   const last = samples[samples.length - 1];
   const chartable = session !== null && entries.length > 0 && samples.length > 0 && types.length === entries.length;
   const csv = session && hello && connection === 'open' ? trendCsvUrl(session.id, hello.client) : null;
-  const labels = useMemo(() => ({ time: t('trend.time'), reset: t('trend.resetZoom') }), [t]);
+  const labels = useMemo(
+    () => ({
+      time: t('trend.time'),
+      reset: t('trend.resetZoom'),
+      resize: t('trend.resize'),
+      units: { int: t('trend.unit.int'), real: t('trend.unit.real'), time: t('trend.unit.time') },
+    }),
+    [t],
+  );
 
   return (
     <div className="trend" data-testid="trend">
@@ -80,7 +96,7 @@ export function TrendView() {
               <code dir="ltr">{item}</code>
               {last && chartable ? (
                 <span className="trend-entry__value" dir="ltr">
-                  {String(numericValue(last.values[index]) ?? '')}
+                  {trendValueText(last.values[index], types[index])}
                 </span>
               ) : null}
               <button
@@ -138,13 +154,7 @@ export function TrendView() {
       <div className="trend__body">
         {chartable ? (
           <Suspense fallback={<p className="panel-empty">{t('trend.loading')}</p>}>
-            <TrendChart
-              entries={entries}
-              types={types}
-              samples={samples}
-              timeLabel={labels.time}
-              resetZoomLabel={labels.reset}
-            />
+            <TrendChart entries={entries} types={types} samples={samples} labels={labels} />
           </Suspense>
         ) : (
           <p className="panel-empty">{session ? t('trend.noEntries') : t('trend.noSession')}</p>

@@ -1,6 +1,20 @@
 import { useCallback, useState } from 'react';
 import { readStored, writeStored } from '../ui/usePersistentState';
 
+/** The list remembered under `key`, its items that pass `isItem` (none when it is unreadable). */
+export function readStoredList<T>(key: string, isItem: (item: unknown) => item is T): T[] {
+  return load(key, isItem);
+}
+
+/** Forgets the list under `key` (it moved elsewhere, e.g. into a watch table file). */
+export function forgetStoredList(key: string): void {
+  try {
+    window.localStorage.removeItem(key);
+  } catch {
+    // Storage unavailable: there was nothing to forget.
+  }
+}
+
 function load<T>(key: string, isItem: (item: unknown) => item is T): T[] {
   try {
     const parsed: unknown = JSON.parse(readStored(key) ?? '[]');
@@ -11,7 +25,7 @@ function load<T>(key: string, isItem: (item: unknown) => item is T): T[] {
 }
 
 /**
- * A list remembered in localStorage under `key` (e.g. one watch table per project); switching
+ * A list remembered in localStorage under `key` (e.g. the trend's entries per project); switching
  * to another key shows that key's list.
  */
 export function useStoredList<T>(

@@ -3,10 +3,18 @@
  * value a frame carries (typed by the entry's type: INT signed, REAL a number, BOOL true/false,
  * CHAR a character, TIME and S5TIME milliseconds) shown as binary, hex, decimal, REAL, characters
  * or a time.
+ *
+ * S5TIME and COUNTER are STEP 7's SIMATIC_TIME and COUNTER formats. A timer (`T1`) shows its
+ * time value as `S5T#1S850MS` and a counter (`C5`) its count as `C#5`. A WORD in these formats
+ * is read as the CPU stores them: a timer word holds the time base in bits 12-13 (00 = 10 ms,
+ * 01 = 100 ms, 10 = 1 s, 11 = 10 s) and three BCD digits (0-999) in bits 0-11; a counter word
+ * three BCD digits. A word that is no valid BCD shows as hex, as it could not be loaded as a
+ * time or count. Modify values typed in these formats are stored back in the same encoding
+ * (the smallest time base that holds the time; finer parts dropped, as `L S5T#` does).
  */
 import type { WatchValue } from '../api/monitor';
 
-export type DisplayFormat = 'bool' | 'bin' | 'hex' | 'dec' | 'real' | 'char' | 'time';
+export type DisplayFormat = 'bool' | 'bin' | 'hex' | 'dec' | 'real' | 'char' | 'time' | 's5time' | 'counter';
 
 /** The formats' names, as STEP 7 writes them; they stay Latin in every language, like mnemonics. */
 export const FORMAT_NAMES: Record<DisplayFormat, string> = {
@@ -17,6 +25,8 @@ export const FORMAT_NAMES: Record<DisplayFormat, string> = {
   real: 'REAL',
   char: 'CHAR',
   time: 'TIME',
+  s5time: 'S5TIME',
+  counter: 'COUNTER',
 };
 
 /** Bits of each elementary type a watch entry can have. */
@@ -43,11 +53,15 @@ export function bitsOf(type: string | undefined): number | null {
 
 /** The formats that make sense for a type (none for a type the table cannot show as a number). */
 export function formatsFor(type: string | undefined): DisplayFormat[] {
+  const kind = type?.toUpperCase();
+  if (kind === 'TIMER') return ['s5time', 'dec'];
+  if (kind === 'COUNTER') return ['counter', 'dec'];
   const bits = bitsOf(type);
   if (bits === null) return [];
   if (bits === 1) return ['bool', 'bin'];
   if (bits === 32) return ['bin', 'hex', 'dec', 'real', 'char', 'time'];
-  if (type?.toUpperCase() === 'S5TIME') return ['bin', 'hex', 'dec', 'time'];
+  if (kind === 'S5TIME') return ['s5time', 'dec'];
+  if (kind === 'WORD') return ['bin', 'hex', 'dec', 'char', 's5time', 'counter'];
   return ['bin', 'hex', 'dec', 'char'];
 }
 
@@ -64,8 +78,12 @@ export function defaultFormat(type: string | undefined): DisplayFormat {
       return 'real';
     case 'CHAR':
       return 'char';
-    case 'TIME':
     case 'S5TIME':
+    case 'TIMER':
+      return 's5time';
+    case 'COUNTER':
+      return 'counter';
+    case 'TIME':
     case 'TIME_OF_DAY':
     case 'TOD':
       return 'time';
@@ -157,13 +175,17 @@ const HEX_PREFIX: Record<number, string> = { 8: 'B#16#', 16: 'W#16#', 32: 'DW#16
 export function formatValue(value: WatchValue['value'], type: string | undefined, format: DisplayFormat): string {
   if (value === null || value === undefined) return '';
   const kind = (type ?? '').toUpperCase();
+  if ((kind === 'TIMER' || kind === 'COUNTER') && typeof value === 'number') {
+    if (format === 'dec') return String(value);
+    return kind === 'TIMER' ? formatS5Time(value) : `C#${value}`;
+  }
   const bits = bitsOf(kind);
   if (bits === null) return typeof value === 'string' ? value : String(value);
   if (bits === 1) {
     const on = value === true || value === 1;
     return format === 'bin' ? (on ? '2#1' : '2#0') : on ? 'TRUE' : 'FALSE';
   }
-  if (kind === 'S5TIME' && typeof value === 'number') return format === 'dec' ? String(value) : formatTime(value, 'S5T#');
+  if (kind === 'S5TIME' && typeof value === 'number') return format === 'dec' ? String(value) : formatS5Time(value);
   if (kind === 'REAL' && (format === 'real' || typeof value === 'string') && format !== 'bin' && format !== 'hex') {
     return typeof value === 'string' ? value : formatReal(Number(value));
   }
@@ -182,12 +204,129 @@ export function formatValue(value: WatchValue['value'], type: string | undefined
       return bits === 32 ? formatReal(bitsFloat(pattern)) : String(pattern);
     case 'char':
       return formatChars(pattern, bits);
+    case 's5time': {
+      const ms = bits === 16 ? s5TimeOfWord(pattern) : null;
+      return ms === null ? `W#16#${pattern.toString(16).toUpperCase().padStart(4, '0')}` : formatS5Time(ms);
+    }
+    case 'counter': {
+      const count = bits === 16 ? countOfWord(pattern) : null;
+      return count === null ? `W#16#${pattern.toString(16).toUpperCase().padStart(4, '0')}` : `C#${count}`;
+    }
     case 'time':
       if (kind === 'TIME_OF_DAY' || kind === 'TOD') return formatTimeOfDay(pattern);
       return formatTime(signedOf(pattern, 32));
     default:
       return value ? 'TRUE' : 'FALSE';
   }
+}
+
+/** The time bases of S5TIME, by the code in bits 12-13 of a timer word. */
+const S5_BASES_MS = [10, 100, 1000, 10_000] as const;
+/** The longest S5TIME: 999 × 10 s. */
+export const S5TIME_MAX_MS = 9_990_000;
+
+/** Three BCD digits (bits 0-11) as a number; null when a nibble is above 9. */
+function bcd3(pattern: number): number | null {
+  let value = 0;
+  for (let shift = 8; shift >= 0; shift -= 4) {
+    const digit = (pattern >> shift) & 0xf;
+    if (digit > 9) return null;
+    value = value * 10 + digit;
+  }
+  return value;
+}
+
+function toBcd3(value: number): number {
+  return (Math.floor(value / 100) << 8) | (Math.floor(value / 10) % 10 << 4) | value % 10;
+}
+
+/** The time of a timer word in ms; null when its value is no BCD. */
+export function s5TimeOfWord(word: number): number | null {
+  const value = bcd3(word & 0xfff);
+  return value === null ? null : value * S5_BASES_MS[(word >> 12) & 3]!;
+}
+
+/** The count of a counter word; null when it is no BCD. */
+export function countOfWord(word: number): number | null {
+  return word & 0xf000 ? null : bcd3(word);
+}
+
+/** A time in ms as a timer word: the smallest base that holds it, finer parts dropped. */
+export function wordOfS5Time(ms: number): number {
+  const code = S5_BASES_MS.findIndex((base) => Math.floor(ms / base) <= 999);
+  return (code << 12) | toBcd3(Math.floor(ms / S5_BASES_MS[code]!));
+}
+
+/** A count (0-999) as a counter word. */
+export function wordOfCount(count: number): number {
+  return toBcd3(count);
+}
+
+/** `S5T#1S850MS`, `S5T#2H46M30S`, `S5T#0MS`: STEP 7's spelling of a timer value (no days). */
+export function formatS5Time(ms: number): string {
+  let rest = Math.max(0, Math.trunc(ms));
+  let text = '';
+  for (const [unit, size] of [
+    ['H', 3_600_000],
+    ['M', 60_000],
+    ['S', 1_000],
+  ] as const) {
+    if (rest >= size) {
+      text += `${Math.floor(rest / size)}${unit}`;
+      rest %= size;
+    }
+  }
+  if (rest > 0 || text === '') text += `${rest}MS`;
+  return `S5T#${text}`;
+}
+
+const S5_UNITS_MS: Record<string, number> = { D: 86_400_000, H: 3_600_000, M: 60_000, S: 1000, MS: 1 };
+
+/** `S5T#1S850MS`, `S5TIME#2s_500ms`, `s5t#1.5s` in ms; null when it is no S5TIME constant. */
+export function parseS5Time(text: string): number | null {
+  const match = /^S5T(?:IME)?#(.+)$/i.exec(text.trim());
+  if (!match) return null;
+  const body = match[1]!.replace(/_/g, '').toUpperCase();
+  const parts = /^(?:(\d+(?:\.\d+)?)(MS|D|H|M|S))+$/.test(body) ? [...body.matchAll(/(\d+(?:\.\d+)?)(MS|D|H|M|S)/g)] : null;
+  if (!parts) return null;
+  const ms = parts.reduce((sum, part) => sum + Number(part[1]) * S5_UNITS_MS[part[2]!]!, 0);
+  return Number.isFinite(ms) && ms <= S5TIME_MAX_MS ? Math.floor(ms) : null;
+}
+
+/** `C#5` (0-999) as the count; null when it is no counter constant. */
+export function parseCount(text: string): number | null {
+  const match = /^C#(\d{1,3})$/i.exec(text.trim());
+  return match ? Number(match[1]) : null;
+}
+
+/**
+ * What the user typed in a row shown in `format`, as the value to send for an entry of `type`:
+ * in a WORD shown as S5TIME or COUNTER, `S5T#…` and `C#…` become the timer or counter word;
+ * null when the text is such a constant but not a valid one (out of range, bad unit).
+ */
+export function modifyValueFor(
+  text: string,
+  type: string | undefined,
+  format: DisplayFormat,
+): boolean | number | string | null {
+  const trimmed = text.trim();
+  const kind = (type ?? '').toUpperCase();
+  if (/^S5T(IME)?#/i.test(trimmed)) {
+    const ms = parseS5Time(trimmed);
+    if (ms === null) return null;
+    return kind === 'WORD' && format === 's5time' ? wordOfS5Time(ms) : trimmed;
+  }
+  if (/^C#/i.test(trimmed)) {
+    const count = parseCount(trimmed);
+    if (count === null) return null;
+    return kind === 'WORD' || kind === 'INT' ? wordOfCount(count) : count;
+  }
+  return parseModifyValue(trimmed);
+}
+
+/** A value in `format` to show as the example of what a row takes. */
+export function exampleOf(format: DisplayFormat): string {
+  return format === 'counter' ? 'C#5' : format === 's5time' ? 'S5T#1S850MS' : format === 'bool' ? 'TRUE' : '16#FF';
 }
 
 /**

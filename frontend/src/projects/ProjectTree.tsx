@@ -69,6 +69,22 @@ export function ProjectTree() {
     }
   }, [projects, toggled]);
 
+  // A project made active elsewhere (the Start page's new source) is shown open at its sources;
+  // one this list does not know yet (just created there) is read from the server once.
+  const [sought, setSought] = useState<number | null>(null);
+  useEffect(() => {
+    if (projectId === null || state.status !== 'ready') return;
+    const known = state.projects.some((project) => project.id === projectId);
+    if (!known && sought !== projectId) {
+      setSought(projectId);
+      reload();
+    } else if (known && sought === projectId) {
+      setSought(null);
+      setOpen(projectKey(projectId), true);
+      setOpen(folderKey(projectId, 'sources'), true);
+    }
+  }, [projectId, state, sought, reload, setOpen]);
+
   const reloadAll = useCallback(() => {
     reload();
     for (const project of projects) {

@@ -1,7 +1,7 @@
 import type { MouseEvent } from 'react';
 import { useTranslation } from 'react-i18next';
 import { useApiErrorText } from '../i18n/useApiErrorText';
-import { ChevronIcon, ProjectIcon, TableIcon, WarningIcon } from '../ui/icons';
+import { ChevronIcon, EyeIcon, ProjectIcon, TableIcon, WarningIcon } from '../ui/icons';
 import { BlockIcon, MoreIcon, SourceFileIcon } from './treeIcons';
 import { blockLabel, type TreeRow } from './treeRows';
 
@@ -77,7 +77,7 @@ function RowContent({ row }: { row: TreeRow }) {
         </>
       );
     case 'file': {
-      const Icon = row.file.language === 'symbols' ? TableIcon : SourceFileIcon;
+      const Icon = row.file.language === 'symbols' ? TableIcon : row.file.language === 'watch' ? EyeIcon : SourceFileIcon;
       return (
         <>
           <Icon className="tree-icon tree-icon--file" />

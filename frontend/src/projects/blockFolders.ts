@@ -1,13 +1,13 @@
 import type { ComponentType } from 'react';
 import type { BlockKind } from '../api/types';
-import { BlocksIcon, FolderIcon, TableIcon, TypeIcon } from '../ui/icons';
+import { BlocksIcon, EyeIcon, FolderIcon, TableIcon, TypeIcon } from '../ui/icons';
 
 /**
  * The folders every S7 project shows under its name: its blocks by kind, as SIMATIC Manager and
  * TIA Portal list them, and its source files (STL, SCL and the symbol table), as STEP 7's
  * "Sources" folder does.
  */
-export type FolderId = BlockKind | 'sources';
+export type FolderId = BlockKind | 'sources' | 'watch';
 
 export interface BlockFolder {
   id: FolderId;
@@ -23,6 +23,8 @@ export const BLOCK_FOLDERS: readonly BlockFolder[] = [
   { id: 'DB', labelKey: 'projects.folders.db', Icon: TableIcon },
   { id: 'UDT', labelKey: 'projects.folders.udt', Icon: TypeIcon },
   { id: 'sources', labelKey: 'projects.folders.sources', Icon: FolderIcon },
+  // TIA Portal's "Watch and force tables": the project's .vat files (watchtables/format.ts)
+  { id: 'watch', labelKey: 'watchTables.folder', Icon: EyeIcon },
 ];
 
 export const projectKey = (id: number) => `project:${id}`;

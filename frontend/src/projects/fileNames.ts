@@ -18,6 +18,14 @@ export function freeSourceName(files: readonly FileInfo[], suffix: 'awl' | 'scl'
   return `Source${number}.${suffix}`;
 }
 
+/** `Symbols.sdf`, else `Symbols2.sdf`, …: a free name for a new symbol table (STEP 7's SDF
+ * export format, which keeps the comment column and reads back unchanged). */
+export function freeSymbolTableName(files: readonly FileInfo[]): string {
+  let candidate = 'Symbols.sdf';
+  for (let number = 2; nameTaken(files, candidate); number += 1) candidate = `Symbols${number}.sdf`;
+  return candidate;
+}
+
 /** `OB1_copy.awl`, `OB1_copy2.awl`, …: a free name for a copy of `name`. */
 export function freeCopyName(files: readonly FileInfo[], name: string): string {
   const [stem, suffix] = split(name);

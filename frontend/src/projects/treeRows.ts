@@ -71,11 +71,16 @@ export function treeRows(
       });
       return;
     }
+    const sources = contents.files.filter((file) => file.language !== 'watch');
+    const tables = contents.files.filter((file) => file.language === 'watch');
     const folders = BLOCK_FOLDERS.filter(
-      (folder) => folder.id === 'sources' || contents.blocks.some((block) => block.kind === folder.id),
+      (folder) =>
+        folder.id === 'sources' ||
+        (folder.id === 'watch' ? tables.length > 0 : contents.blocks.some((block) => block.kind === folder.id)),
     );
     folders.forEach((folder, folderIndex) => {
-      const members = folder.id === 'sources' ? contents.files : contents.blocks.filter((block) => block.kind === folder.id);
+      const files = folder.id === 'watch' ? tables : folder.id === 'sources' ? sources : null;
+      const members = files ?? contents.blocks.filter((block) => block.kind === folder.id);
       const fKey = folderKey(project.id, folder.id);
       const open = members.length > 0 ? isExpanded(fKey, toggled) : null;
       rows.push({
@@ -90,14 +95,14 @@ export function treeRows(
         expanded: open,
       });
       if (!open) return;
-      if (folder.id === 'sources') {
-        contents.files.forEach((file, fileIndex) =>
+      if (files) {
+        files.forEach((file, fileIndex) =>
           rows.push({
             type: 'file',
             key: fileKey(project.id, file.name),
             level: 3,
             posinset: fileIndex + 1,
-            setsize: contents.files.length,
+            setsize: files.length,
             projectId: project.id,
             file,
           }),

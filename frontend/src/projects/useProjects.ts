@@ -11,6 +11,13 @@ function byName(a: Project, b: Project): number {
   return a.name.localeCompare(b.name, undefined, { sensitivity: 'base', numeric: true });
 }
 
+const PROJECT_MADE = 'nasaq:project-made';
+
+/** Tells every project list on the page about a project made outside it. */
+export function announceProject(project: Project): void {
+  window.dispatchEvent(new CustomEvent<Project>(PROJECT_MADE, { detail: project }));
+}
+
 /** The server's project list: loads on mount, reloads on demand, takes in newly created projects. */
 export function useProjects() {
   const [state, setState] = useState<ProjectsState>({ status: 'loading' });
@@ -42,6 +49,13 @@ export function useProjects() {
       return { status: 'ready', projects: [...known, project].sort(byName) };
     });
   }, []);
+
+  // A project made elsewhere in the page (the Start page's examples) joins the list.
+  useEffect(() => {
+    const taken = (event: Event) => add((event as CustomEvent<Project>).detail);
+    window.addEventListener(PROJECT_MADE, taken);
+    return () => window.removeEventListener(PROJECT_MADE, taken);
+  }, [add]);
 
   const remove = useCallback((id: number) => {
     setState((current) =>

@@ -16,15 +16,16 @@ import { discardFile, flushFile, rebaseFile } from '../editor/autosave';
 import { useEditorTabs } from '../editor/EditorTabsContext';
 import { SOURCE_SUFFIX, languageOfFile } from '../editor/fileLanguage';
 import { useOpenProjectFile } from '../editor/useOpenProjectFile';
+import { useOpenCpuProperties } from '../cpuprops/openCpuProperties';
 import { fileKey } from './blockFolders';
-import { freeCopyName, freeSourceName, nameTaken, newSourceText } from './fileNames';
+import { freeCopyName, freeSourceName, freeSymbolTableName, nameTaken, newSourceText } from './fileNames';
 import { projectContents } from './projectContents';
 import type { MenuAction } from './RowMenu';
 import { ConfirmDialog, FileNameDialog, ProjectNameDialog } from './TreeDialogs';
 import type { TreeRow } from './treeRows';
 
 type TreeDialog =
-  | { kind: 'new'; projectId: number; language: 'stl' | 'scl' | 'lad' }
+  | { kind: 'new'; projectId: number; language: 'stl' | 'scl' | 'lad' | 'symbols' }
   | { kind: 'rename'; projectId: number; name: string }
   | { kind: 'duplicate'; projectId: number; name: string }
   | { kind: 'deleteFile'; projectId: number; name: string }
@@ -62,6 +63,7 @@ export function useTreeActions({ showError, selectKey, onProjectDeleted, onProje
   const { t } = useTranslation();
   const { openSource, openDb, renameFileTabs, closeFileTabs } = useEditorTabs();
   const openProjectFile = useOpenProjectFile();
+  const openCpuProperties = useOpenCpuProperties();
   const [dialog, setDialog] = useState<TreeDialog | null>(null);
   const close = useCallback(() => setDialog(null), []);
 
@@ -108,12 +110,22 @@ export function useTreeActions({ showError, selectKey, onProjectDeleted, onProje
       { id: 'new-stl', label: t('projects.actions.newStl'), onSelect: () => setDialog({ kind: 'new', projectId, language: 'stl' }) },
       { id: 'new-scl', label: t('projects.actions.newScl'), onSelect: () => setDialog({ kind: 'new', projectId, language: 'scl' }) },
       { id: 'new-lad', label: t('projects.actions.newLad'), onSelect: () => setDialog({ kind: 'new', projectId, language: 'lad' }) },
+      {
+        id: 'new-symbols',
+        label: t('projects.actions.newSymbols'),
+        onSelect: () => setDialog({ kind: 'new', projectId, language: 'symbols' }),
+      },
     ];
     switch (row.type) {
       case 'project':
         return [
           ...creating,
           { id: 'rename', label: t('shortcuts.renameProject.action'), onSelect: () => rename(row) },
+          {
+            id: 'cpu-properties',
+            label: t('cpuProps.menu'),
+            onSelect: () => void openCpuProperties(projectId).catch((error: unknown) => showError(asApiError(error))),
+          },
           { id: 'export', label: t('projects.actions.export'), onSelect: () => void exportProject(projectId) },
           { id: 'delete', label: t('projects.actions.deleteProject'), onSelect: () => remove(row), danger: true },
         ];
@@ -163,13 +175,19 @@ export function useTreeActions({ showError, selectKey, onProjectDeleted, onProje
       <FileNameDialog
         title={t(`projects.files.newTitle.${language}`)}
         submitLabel={t('projects.files.create')}
-        initialName={freeSourceName(filesOf(projectId), SOURCE_SUFFIX[language])}
+        initialName={
+          language === 'symbols'
+            ? freeSymbolTableName(filesOf(projectId))
+            : freeSourceName(filesOf(projectId), SOURCE_SUFFIX[language])
+        }
         testId="file-new-dialog"
         onClose={close}
         onSubmit={async (name) => {
           if (nameTaken(filesOf(projectId), name)) throw takenError(name);
-          const typed = languageOfFile(name);
-          const text = newSourceText(typed && typed !== 'symbols' ? typed : language, projectContents.get(projectId)?.blocks ?? []);
+          // A symbol table starts empty (no example rows to delete); a source as an empty FC.
+          const typed = languageOfFile(name) ?? language;
+          const text =
+            typed === 'symbols' ? '' : newSourceText(typed === 'scl' || typed === 'fbd' || typed === 'lad' ? typed : 'stl', projectContents.get(projectId)?.blocks ?? []);
           const info = await saveFile(projectId, name, { text });
           projectContents.putFile(projectId, info);
           projectContents.reloadSoon(projectId);

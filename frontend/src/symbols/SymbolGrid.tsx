@@ -28,16 +28,35 @@ export interface SymbolGridProps {
   onSort: (field: SymbolField) => void;
   onSelect: (id: number, selected: boolean) => void;
   onActiveRow: (id: number | null) => void;
+  /** A row to make active (its name cell), once per `seq`: F12 on a symbol. */
+  focusRow?: { id: number; seq: number } | null;
+  /** Whether the grid is on screen (a hidden grid cannot take the focus yet). */
+  visible?: boolean;
+}
+
+/**
+ * Where Tab (or Shift+Tab) goes from `cell`, as in a spreadsheet: the next (previous) column, from
+ * the last column to the first of the next row (from the first to the last of the row before).
+ * Null past the grid's first or last cell: the focus then leaves the grid as usual.
+ */
+export function tabTarget(cell: Cell, backwards: boolean, rowCount: number): Cell | null {
+  const last = SYMBOL_FIELDS.length - 1;
+  if (backwards) {
+    if (cell.col > 0) return { row: cell.row, col: cell.col - 1 };
+    return cell.row > 0 ? { row: cell.row - 1, col: last } : null;
+  }
+  if (cell.col < last) return { row: cell.row, col: cell.col + 1 };
+  return cell.row < rowCount - 1 ? { row: cell.row + 1, col: 0 } : null;
 }
 
 /**
  * The symbol rows as a keyboard grid of text fields: arrows move between cells (left and right
- * at the text's ends), Enter moves down, Page Up/Down by a page, Ctrl+Home/End to the first or
+ * at the text's ends), Tab and Shift+Tab to the next and previous cell, Enter moves down, Page Up/Down by a page, Ctrl+Home/End to the first or
  * last row, Escape undoes the cell's edit, Ctrl+Delete deletes the row. Addresses and names are
  * data: the grid is left-to-right in every interface language.
  */
 export function SymbolGrid(props: SymbolGridProps) {
-  const { rows, problems, sort, selected, onChange, onAdd, onDelete, onSort, onSelect, onActiveRow } = props;
+  const { rows, problems, sort, selected, onChange, onAdd, onDelete, onSort, onSelect, onActiveRow, focusRow, visible = true } = props;
   const { t } = useTranslation();
   const message = useDiagnosticMessage();
   const scroller = useRef<HTMLDivElement>(null);
@@ -80,6 +99,14 @@ export function SymbolGrid(props: SymbolGridProps) {
     }
   });
 
+  const focusSeq = focusRow?.seq ?? 0;
+  useEffect(() => {
+    if (!focusRow || !visible) return;
+    const index = rows.findIndex((row) => row.id === focusRow.id);
+    if (index >= 0) moveTo({ row: index, col: 0 });
+    // Once per request, when the grid is shown.
+  }, [focusSeq, visible]);
+
   const moveTo = (cell: Cell) => {
     const row = Math.max(0, Math.min(total - 1, cell.row));
     const col = Math.max(0, Math.min(SYMBOL_FIELDS.length - 1, cell.col));
@@ -106,6 +133,7 @@ export function SymbolGrid(props: SymbolGridProps) {
     else if (event.key === 'ArrowUp' || (event.key === 'Enter' && event.shiftKey)) next = { row: cell.row - 1, col: cell.col };
     else if (event.key === 'ArrowLeft' && atStart && cell.col > 0) next = { row: cell.row, col: cell.col - 1 };
     else if (event.key === 'ArrowRight' && atEnd && cell.col < SYMBOL_FIELDS.length - 1) next = { row: cell.row, col: cell.col + 1 };
+    else if (event.key === 'Tab' && !ctrl && !event.altKey) next = tabTarget(cell, event.shiftKey, total);
     else if (event.key === 'PageDown') next = { row: cell.row + page, col: cell.col };
     else if (event.key === 'PageUp') next = { row: cell.row - page, col: cell.col };
     else if (ctrl && event.key === 'Home') next = { row: 0, col: cell.col };
@@ -141,7 +169,8 @@ export function SymbolGrid(props: SymbolGridProps) {
         key={row ? row.id : 'new'}
         role="row"
         aria-rowindex={index + 2}
-        className={`symbol-grid__row${row ? '' : ' symbol-grid__row--new'}${worst ? ` symbol-grid__row--${worst}` : ''}`}
+        aria-selected={active?.row === index}
+        className={`symbol-grid__row${row ? '' : ' symbol-grid__row--new'}${worst ? ` symbol-grid__row--${worst}` : ''}${active?.row === index ? ' symbol-grid__row--active' : ''}`}
         style={{ top: (index + 1) * ROW_HEIGHT, height: ROW_HEIGHT }}
         data-testid={row ? 'symbol-row' : 'symbol-row-new'}
         data-name={row?.name}

@@ -1,10 +1,11 @@
-import { useState } from 'react';
+import { useEffect, useState } from 'react';
 import { useTranslation } from 'react-i18next';
 import { getFile } from '../api/client';
 import { flushFile } from '../editor/autosave';
 import { useEditorTabs, type SourceTab } from '../editor/EditorTabsContext';
 import { SourceView } from '../editor/SourceView';
 import { useUiLanguage } from '../i18n/useDocumentLanguage';
+import { useSymbolRowRequest } from './symbolSelection';
 import { SymbolTableView } from './SymbolTableView';
 
 export type SymbolTabView = 'table' | 'text';
@@ -27,6 +28,9 @@ export function SymbolTableTab({ tab, active }: { tab: SourceTab; active: boolea
   const [generation, setGeneration] = useState(0);
   const [busy, setBusy] = useState(false);
   const file = tab.file;
+  // F12 on a symbol: the table view, where its row is selected.
+  const rowRequest = useSymbolRowRequest(file?.projectId ?? -1, file?.path ?? '');
+  const requestSeq = rowRequest?.seq ?? 0;
 
   const switchTo = async (next: SymbolTabView) => {
     if (next === view || busy || !file) return;
@@ -46,6 +50,11 @@ export function SymbolTableTab({ tab, active }: { tab: SourceTab; active: boolea
       setBusy(false);
     }
   };
+
+  useEffect(() => {
+    if (requestSeq > 0 && view === 'text') void switchTo('table');
+    // Only a new request switches; the user may go back to the text afterwards.
+  }, [requestSeq]);
 
   return (
     <div className="symbol-tab" hidden={!active} data-testid={`symbol-tab-${tab.id}`}>

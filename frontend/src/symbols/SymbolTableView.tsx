@@ -20,6 +20,7 @@ import { useUiLanguage } from '../i18n/useDocumentLanguage';
 import { projectContents, type ProjectContentsStore } from '../projects/projectContents';
 import { ErrorIcon, WarningIcon } from '../ui/icons';
 import { SymbolGrid } from './SymbolGrid';
+import { useSymbolRowRequest } from './symbolSelection';
 import {
   emptyRow,
   filterRows,
@@ -263,6 +264,18 @@ export function SymbolTableView({ tabId, file, active, store = projectContents }
     }
   };
 
+  // F12 on a symbol in an editor: its row becomes the grid's active row (shown even if filtered out).
+  const rowRequest = useSymbolRowRequest(file.projectId, file.path);
+  const [focusRow, setFocusRow] = useState<{ id: number; seq: number } | null>(null);
+  useEffect(() => {
+    if (!rowRequest || !rows || focusRow?.seq === rowRequest.seq) return;
+    const wanted = rowRequest.name.toLowerCase();
+    const row = rows.find((item) => item.name.trim().toLowerCase() === wanted);
+    if (!row) return;
+    setPinned((current) => new Set([...current, row.id]));
+    setFocusRow({ id: row.id, seq: rowRequest.seq });
+  }, [rowRequest, rows, focusRow]);
+
   const activeProblems = activeRow !== null ? (problems.get(activeRow) ?? []) : [];
 
   if (loadError) {
@@ -409,6 +422,8 @@ export function SymbolTableView({ tabId, file, active, store = projectContents }
         onSort={onSort}
         onSelect={onSelect}
         onActiveRow={setActiveRow}
+        focusRow={focusRow}
+        visible={active}
       />
       <div className="symbol-table__status" dir={dir} lang={language}>
         <span data-testid="symbol-count">

@@ -33,6 +33,8 @@ from nasaq.lang.types import BlockType, StructType, type_text
 STL_SUFFIXES = (".awl", ".stl")
 SCL_SUFFIXES = (".scl",)
 LAD_SUFFIXES = (".lad", ".fbd")  # nasaq.lang.lad.text.SUFFIXES
+WATCH_TABLE_SUFFIXES = (".vat",)  # nasaq.workbench.watch_table: project files, not program
+CPU_PROPERTIES_SUFFIXES = (".properties",)  # nasaq.workbench.cpu_properties: not program
 # A whole-project export of a large plant is a few MB; anything bigger is not an STL source anyone
 # wrote, and the parser (about 7 µs per token) would make the user wait for nothing.
 MAX_SOURCE_CHARS = 4 * 1024 * 1024
@@ -144,7 +146,9 @@ class _Compiler:
                 self.diagnostics += read_symbol_table(source.name, text, self.symbols)
         for source in sources:
             suffix = _suffix(source.name)
-            if suffix in SYMBOL_TABLE_SUFFIXES:
+            if suffix in SYMBOL_TABLE_SUFFIXES or suffix in WATCH_TABLE_SUFFIXES:
+                continue
+            if suffix in CPU_PROPERTIES_SUFFIXES:
                 continue
             if suffix in SCL_SUFFIXES:
                 self.read_scl(source)

@@ -19,6 +19,7 @@ from nasaq.diagnostics import Diagnostic
 from nasaq.lang.stl.addresses import AddressError, Parsed, parse_address
 from nasaq.lang.stl.ast import Loc
 from nasaq.lang.stl.diag import problem
+from nasaq.lang.stl.symbol_fit import misfit
 
 SYMBOL_TABLE_SUFFIXES = (".sdf", ".asc", ".seq", ".csv")
 
@@ -91,7 +92,8 @@ def _rows_seq(text: str) -> list[tuple[int, list[str]]]:
 
 
 def read_symbol_table(file: str, text: str, table: SymbolTable) -> list[Diagnostic]:
-    """Adds the symbols of one file to ``table``; problems are warnings with the file's line."""
+    """Adds the symbols of one file to ``table``; problems carry the file's line. A line that
+    cannot be read is a warning (ignored); a type that does not fit its address is an error."""
     suffix = file.lower().rsplit(".", 1)[-1]
     reader = {"asc": _rows_asc, "seq": _rows_seq}.get(suffix, _rows_csv)
     diagnostics: list[Diagnostic] = []
@@ -122,6 +124,22 @@ def read_symbol_table(file: str, text: str, table: SymbolTable) -> list[Diagnost
             file,
             number,
         )
+        allowed = misfit(parsed, symbol.type)
+        if allowed is not None:
+            # An error, but the symbol stays defined: its uses are not also reported as undefined.
+            diagnostics.append(
+                problem(
+                    "SYT001",
+                    file,
+                    where,
+                    file=file,
+                    line=number,
+                    name=name,
+                    type=symbol.type,
+                    address=address,
+                    allowed=allowed,
+                )
+            )
         key = name.casefold()
         if key in table.symbols:
             first = table.symbols[key]

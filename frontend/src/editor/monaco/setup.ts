@@ -7,6 +7,7 @@
  * ~80 other languages of the full `monaco-editor` entry are left out on purpose.
  */
 import './environment';
+import './menu.css';
 import * as monaco from 'monaco-editor/editor/editor.api';
 
 // Editor features: modules of `monaco-editor`'s full entry (editor.main.js), minus those for

@@ -47,5 +47,12 @@ export const nasaqLightTheme: editor.IStandaloneThemeData = {
     'editorWarning.foreground': '#8a5300',
     'editorInfo.foreground': '#1d5fa8',
     'focusBorder': '#1565c0',
+    // The context menu (see menu.css for the menu outside the editor's element).
+    'menu.background': '#ffffff',
+    'menu.foreground': '#1b2733',
+    'menu.selectionBackground': '#d3eaec',
+    'menu.selectionForeground': '#1b2733',
+    'menu.separatorBackground': '#c3cdd5',
+    'menu.border': '#9aa8b4',
   },
 };
