@@ -32,7 +32,10 @@ test('the shell shows every main control with a name', async ({ page, watch }) =
   for (const id of MAIN_CONTROLS) await expect(page.getByTestId(id)).toBeVisible();
   await expect(page.getByTestId('diagnostics')).toBeVisible();
   await openBottomTab(page, text(catalogue('en'), 'panels.watch'));
-  await expect(page.getByTestId('watch-table')).toBeVisible();
+  // Watch tables are files of a project: before one is chosen the tab says where they live.
+  const watchTables = path.resolve(__dirname, '../../frontend/src/watchtables/locales/en.json');
+  const noProject = text(JSON.parse(fs.readFileSync(watchTables, 'utf8')) as Catalogue, 'watchTables.noProject');
+  await expect(page.getByText(noProject)).toBeVisible();
   await expect(page.getByTestId('lesson-pane')).toBeVisible();
 
   // The simulator is not there yet: the CPU buttons are present, named, and honestly disabled.
@@ -58,7 +61,7 @@ test('Persian and Arabic turn the page right-to-left, English turns it back', as
     await chooseLanguage(page, code);
     await expect(page.locator('html')).toHaveAttribute('dir', 'rtl');
     await expect(page.getByTestId('cpu-run')).toHaveAccessibleName(text(cat, 'cpu.run.label'));
-    await expect(page.getByRole('heading', { name: text(cat, 'projects.title') })).toBeVisible();
+    await expect(page.getByRole('heading', { name: text(cat, 'projects.title'), exact: true })).toBeVisible();
     await expect(page).toHaveTitle(text(cat, 'app.documentTitle'));
     // The layout mirrors: the project tree moves to the right of the editor...
     const tree = (await page.getByTestId('block-tree').boundingBox())!;

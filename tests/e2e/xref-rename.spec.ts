@@ -46,7 +46,14 @@ test('cross-references of "Motor", rename to "Pump" with preview and undo, and a
   await page.setViewportSize({ width: 1440, height: 900 });
   await page.goto('/');
   const projectId = await expandProject(page, 'motor-start-stop');
+  // A watch table naming the symbol: rename reaches it too (other tests may have left tables).
+  const table = `/api/projects/${projectId}/files/${encodeURIComponent('Rename check.vat')}`;
+  expect((await request.put(table, { data: { text: '"Motor" | BOOL  // the contactor\nQ 4.1 | BOOL\n' } })).ok()).toBe(true);
   const original = await texts(request, projectId);
+  const tableLines = Object.entries(original)
+    .filter(([name]) => name.endsWith('.vat'))
+    .reduce((count, [, text]) => count + text.split('\n').filter((line) => line.includes('"Motor"')).length, 0);
+  expect(tableLines).toBeGreaterThan(0);
   const editor = await openFile(page, projectId, 'OB1.awl');
 
   // Shift+F12 on "Motor": every use, with its block, network and line.
@@ -85,8 +92,9 @@ test('cross-references of "Motor", rename to "Pump" with preview and undo, and a
   await dialog.getByTestId('rename-new-name').fill('Pump');
   await dialog.getByRole('button', { name: 'Preview changes' }).click();
   const changes = dialog.getByTestId('rename-change');
-  await expect(changes).toHaveCount(4);
-  await expect(changes.last()).toContainText('symbols.sdf');
+  await expect(changes).toHaveCount(4 + tableLines); // three lines of OB1.awl, the symbol table, the tables' rows
+  await expect(changes.filter({ hasText: 'symbols.sdf' })).toHaveCount(1);
+  await expect(changes.filter({ hasText: 'Rename check.vat' })).toHaveCount(1);
   expect(await texts(request, projectId)).toEqual(original); // a preview writes nothing
   await dialog.getByRole('button', { name: 'Apply' }).click();
   await expect(dialog.getByTestId('rename-done')).toBeVisible();
@@ -94,12 +102,13 @@ test('cross-references of "Motor", rename to "Pump" with preview and undo, and a
   expect(renamed['OB1.awl']!.match(/"Pump"/g)).toHaveLength(3);
   expect(renamed['OB1.awl']).not.toContain('"Motor"');
   expect(renamed['symbols.sdf']).toContain('"Pump","Q 4.0"');
+  expect(renamed['Rename check.vat']).toBe('"Pump" | BOOL  // the contactor\nQ 4.1 | BOOL\n');
   // The open editor took the renamed text (no conflict with its autosave).
   await expect(visibleEditor(page).locator('.view-line', { hasText: '=     "Pump"' })).toBeVisible();
 
   // The renamed program still passes the example's scenario.
   const folder = fs.mkdtempSync(path.join(os.tmpdir(), 'nasaq-xref-'));
-  for (const [name, text] of Object.entries(renamed)) fs.writeFileSync(path.join(folder, name), text);
+  for (const [name, text] of Object.entries(renamed)) if (!name.endsWith('.vat')) fs.writeFileSync(path.join(folder, name), text);
   fs.copyFileSync(path.join(root, 'examples', 'projects', 'motor-start-stop', 'motor.yaml'), path.join(folder, 'motor.yaml'));
   execFileSync(path.join(root, '.venv', 'bin', 'nasaq'), ['test', path.join(folder, 'motor.yaml')], { stdio: 'pipe' });
   fs.rmSync(folder, { recursive: true, force: true });
@@ -136,6 +145,7 @@ test('cross-references of "Motor", rename to "Pump" with preview and undo, and a
   await dialog.getByRole('button', { name: 'بستن', exact: true }).click();
   expect(await texts(request, projectId)).toEqual(original);
 
+  expect((await request.delete(table)).ok()).toBe(true);
   expect(watch.consoleErrors.filter((text) => !text.includes('409') && !text.includes('422'))).toEqual([]);
   expect(watch.foreignRequests).toEqual([]);
 });

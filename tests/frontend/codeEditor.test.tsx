@@ -200,53 +200,24 @@ describe('CodeEditor', () => {
   });
 });
 
-describe('source tabs from the Start page', () => {
-  it('open a new STL and SCL source with an example, named, unsaved, and closable', async () => {
+describe("the Start page's new source without a chosen project", () => {
+  it('asks which project (here: none yet) and opens no buffer that could not be saved', async () => {
     healthyServer();
     const { user } = renderApp('en');
     await user.click(screen.getByRole('button', { name: 'New STL source' }));
-    const stlTab = screen.getByTestId('editor-tab-source-1');
-    expect(stlTab.textContent).toContain('source1.awl');
-    expect(stlTab.textContent).toContain('Unsaved changes');
-    expect(stlTab.getAttribute('aria-current')).toBe('true');
-    await waitFor(() => expect(fake.state.editors).toHaveLength(1));
-    const stlModel = fake.state.models[0]!;
-    expect(stlModel.language).toBe('stl');
-    expect(stlModel.value).toContain('ORGANIZATION_BLOCK OB 1');
-    expect(fake.state.editors[0]!.options.ariaLabel).toBe('STL source source1.awl');
-
-    await user.click(screen.getByTestId('editor-tab-start'));
-    expect(screen.getByTestId('source-view-source-1').hidden).toBe(true);
-    await user.click(screen.getByRole('button', { name: 'New SCL source' }));
-    expect(screen.getByTestId('editor-tab-source-2').textContent).toContain('source1.scl');
-    await waitFor(() => expect(fake.state.editors).toHaveLength(2));
-    expect(fake.state.models[1]!.language).toBe('scl');
-    expect(fake.state.models[1]!.value).toContain('FUNCTION_BLOCK FB 10');
-    // The STL editor stays alive behind the SCL tab, with its text.
-    expect(fake.state.editors[0]!.disposed).toBe(false);
-
-    await user.click(screen.getByTestId('editor-tab-start'));
-    await user.click(screen.getByRole('button', { name: 'New STL source' }));
-    expect(screen.getByTestId('editor-tab-source-3').textContent).toContain('source2.awl');
-
-    await user.click(screen.getByTestId('editor-tab-close-source-1'));
+    const dialog = await screen.findByTestId('project-pick-dialog');
+    await waitFor(() => expect(dialog.textContent).toContain('You have no project yet: create one first.'));
+    expect(within(dialog).getByTestId('project-pick-new').textContent).toBe('New project…');
     expect(screen.queryByTestId('editor-tab-source-1')).toBeNull();
-    expect(fake.state.editors[0]!.disposed).toBe(true);
-    expect(fake.state.models[0]!.disposed).toBe(true);
+    expect(fake.state.editors).toHaveLength(0);
   });
 
-  it('keeps what is typed in the tab, in Persian too, where the editor stays left-to-right', async () => {
+  it('asks in Persian too', async () => {
     healthyServer();
     const { user } = renderApp('fa');
     await user.click(screen.getByRole('button', { name: 'منبع STL جدید' }));
-    await waitFor(() => expect(fake.state.editors).toHaveLength(1));
-    expect(screen.getByTestId('code-editor').getAttribute('dir')).toBe('ltr');
-    expect(fake.state.editors[0]!.options.ariaLabel).toBe('منبع STL source1.awl');
-    act(() => fake.state.models[0]!.type('\n      = Q 4.1'));
-    // Going to another tab and back keeps the same editor and text.
-    await user.click(screen.getByTestId('editor-tab-start'));
-    await user.click(screen.getByTestId('editor-tab-source-1'));
-    expect(fake.state.editors).toHaveLength(1);
-    expect(fake.state.models[0]!.value).toMatch(/= Q 4\.1$/);
+    const dialog = await screen.findByTestId('project-pick-dialog');
+    expect(within(dialog).getByTestId('project-pick-new').textContent).not.toMatch(/[A-Za-z]/);
+    expect(fake.state.editors).toHaveLength(0);
   });
 });

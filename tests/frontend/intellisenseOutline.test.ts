@@ -131,7 +131,7 @@ describe('the outline store', () => {
 describe('go to definition of symbols', () => {
   it('opens the symbol table at the symbol line; a block name still goes to the block', () => {
     const scale = block('FC', 10, 'Scale', 'Scale.scl', 5);
-    expect(findDefinition([scale], '      =     "Pump";', 15, OUTLINE.symbols)).toEqual({ file: 'symbols.sdf', line: 3 });
+    expect(findDefinition([scale], '      =     "Pump";', 15, OUTLINE.symbols)).toEqual({ file: 'symbols.sdf', line: 3, symbol: 'Pump' });
     expect(findDefinition([scale], '      CALL  "Scale" (', 15, OUTLINE.symbols)).toBe(scale);
     expect(findDefinition([scale], '      =     "Unknown";', 15, OUTLINE.symbols)).toBeNull();
     expect(findDefinition([scale], '      =     "Pump";', 15)).toBeNull();

@@ -42,11 +42,11 @@ const SYMBOLS = `"Start","I 0.0","BOOL","start push button"
 "Motor","Q 4.0","BOOL","motor contactor"
 `;
 
-const fileInfo = (name: string) => ({
+const fileInfo = (name: string, version = 1) => ({
   name,
-  language: name.endsWith('.sdf') ? 'symbols' : 'stl',
+  language: name.endsWith('.sdf') ? 'symbols' : name.endsWith('.vat') ? 'watch' : 'stl',
   size: 1,
-  version: 1,
+  version,
   created_at: '2025-01-01T00:00:00Z',
   updated_at: '2025-01-01T00:00:00Z',
 });
@@ -56,8 +56,22 @@ const SESSION = { id: 's1', blocks: ['OB1'], cpu: cpuState(), clients: [], webso
 let sockets: FakeSocket[] = [];
 const socket = () => sockets[sockets.length - 1]!;
 
+/** The watch table files the panel saves, by name, with their text and version. */
+let tables = new Map<string, { text: string; version: number }>();
+
 function server(overrides: Record<string, (init: RequestInit | undefined) => Response | Promise<Response>> = {}) {
+  tables = new Map();
+  const table = (name: string) => ({
+    [`PUT /api/projects/1/files/${name}`]: (init: RequestInit | undefined) => {
+      const text = (JSON.parse(String(init?.body)) as { text: string }).text;
+      const version = (tables.get(name)?.version ?? 0) + 1;
+      tables.set(name, { text, version });
+      return json({ ...fileInfo(name, version), text }, version === 1 ? 201 : 200);
+    },
+    [`GET /api/projects/1/files/${name}`]: () => json({ ...fileInfo(name, tables.get(name)!.version), text: tables.get(name)!.text }),
+  });
   return mockServer({
+    ...table('VAT_1.vat'),
     'POST /api/projects/1/sessions': () => json(SESSION, 201),
     'GET /api/projects/1/files': () => json([fileInfo('OB1.awl'), fileInfo('symbols.sdf')]),
     'GET /api/projects/1/files/OB1.awl': () => json({ ...fileInfo('OB1.awl'), text: OB1 }),
@@ -313,6 +327,19 @@ describe('I/O panel', () => {
 });
 
 describe('watch table', () => {
+  it('is a real table with the five column headers, an actions column and an empty row', async () => {
+    server();
+    const { user } = renderMonitor();
+    await user.click(screen.getByTestId('panel-tab-watch'));
+    const table = await screen.findByTestId('watch-table');
+    const headers = within(table).getAllByRole('columnheader').map((th) => th.textContent);
+    expect(headers).toEqual(['Address', 'Symbol', 'Display format', 'Monitor value', 'Modify value', 'Actions']);
+    const rows = within(table).getAllByRole('row');
+    expect(rows).toHaveLength(2);
+    expect(rows[1]!.textContent).toContain('add an address or a symbol');
+    expect(rows[1]!.querySelector('td')!.colSpan).toBe(6);
+  });
+
   it('adds entries, shows values in the chosen format, modifies, forces, and shows errors', async () => {
     server();
     const { user } = renderMonitor();
@@ -371,11 +398,14 @@ describe('watch table', () => {
     await user.click(within(bad).getByTestId('watch-remove'));
     expect(screen.getAllByTestId('watch-row')).toHaveLength(2);
     await waitFor(() => expect(tableEntries()).toEqual(['"Motor"', 'MW10']));
-    // The rows are kept per project.
-    expect(JSON.parse(window.localStorage.getItem('nasaq.watch.1')!)).toEqual([
-      { entry: '"Motor"', format: null },
-      { entry: 'MW10', format: 'bin' },
-    ]);
+    // The rows are kept in the project, in its first watch table file.
+    await waitFor(() => {
+      const rows = tables.get('VAT_1.vat')!.text.split('\n').filter((line) => line.trim() && !line.startsWith('//'));
+      expect(rows.map((line) => line.split('|').map((cell) => cell.trim()).slice(0, 2))).toEqual([
+        ['"Motor"'],
+        ['MW10', 'BIN'],
+      ]);
+    });
   });
 });
 

@@ -50,7 +50,7 @@ export function BottomPanel() {
     { id: 'io', testId: 'panel-tab-io', icon: <IoIcon />, label: t('panels.io'), panel: <IoPanel /> },
     { id: 'debug', testId: 'panel-tab-debug', icon: <StepIcon />, label: t('debug.panel.tab'), panel: <DebugPanel /> },
     { id: 'xref', testId: 'panel-tab-xref', icon: <ListIcon />, label: t('xref.panel.tab'), panel: <CrossReferencesPanel /> },
-    { id: 'assignments', testId: 'panel-tab-assignments', icon: <ListIcon />, label: t('xref.assignments.tab'), panel: <AssignmentPanel /> },
+    { id: 'assignments', testId: 'panel-tab-assignments', icon: <ListIcon />, label: t('xref.assignments.tab'), panel: <AssignmentPanel shown={selected === 'assignments'} /> },
   ];
 
   return (

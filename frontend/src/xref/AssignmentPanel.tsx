@@ -22,7 +22,11 @@ function mark(bit: AssignedBit | undefined): string {
  * and PQ bytes the program uses, bit by bit (R read, W written) and as bytes, words and double
  * words, then its timers and counters. A cell shows the cross-references of its address.
  */
-export function AssignmentPanel() {
+/**
+ * `shown` is whether its tab is in front: the list is a compile of the whole project on the
+ * server, so a hidden panel does not ask for it after every save (a class shares one server).
+ */
+export function AssignmentPanel({ shown = true }: { shown?: boolean }) {
   const { t } = useTranslation();
   const { dir } = useUiLanguage();
   const errorText = useApiErrorText();
@@ -41,14 +45,14 @@ export function AssignmentPanel() {
     }
   }, []);
 
-  // Read again whenever the project's build changes (a save, a rename).
+  // Read again whenever the project's build changes (a save, a rename) while the tab is shown.
   const diagnostics = contents?.diagnostics;
   useEffect(() => {
-    if (projectId === null) return;
+    if (projectId === null || !shown) return;
     const controller = new AbortController();
     void load(projectId, controller.signal);
     return () => controller.abort();
-  }, [projectId, diagnostics, load]);
+  }, [projectId, diagnostics, load, shown]);
 
   if (projectId === null) return <p className="panel-empty">{t('xref.panel.noProject')}</p>;
 

@@ -56,18 +56,12 @@ def test_line_values_at_a_hold_are_the_locals_not_the_last_scan(calc: Monitor) -
     calc.ok("open_block", block="FB2")
     calc.ok("run")
     # A whole scan leaves the loop's last values: total = 1 + 2 + 3 + 4.
-    calc.until(
-        lambda m: _line(m, BODY) == {"total": 10, "i": 4}, "the status of a whole scan"
-    )
+    calc.until(lambda m: _line(m, BODY) == {"total": 10, "i": 4}, "the status of a whole scan")
 
-    calc.ok(
-        "set_breakpoint", location={"file": "calc.scl", "line": BODY}, condition="i = 3"
-    )
+    calc.ok("set_breakpoint", location={"file": "calc.scl", "line": BODY}, condition="i = 3")
     calc.until_held()
     assert (calc.local("i"), calc.local("total")) == (3, 3)
-    calc.until(
-        lambda m: _line(m, BODY) == {"total": 3, "i": 3}, "the line values at the hold"
-    )
+    calc.until(lambda m: _line(m, BODY) == {"total": 3, "i": 3}, "the line values at the hold")
     assert _disagreements(calc) == []
     runs = calc.local("runs")
     # A line not yet run in this scan shows the value now, too.
@@ -76,16 +70,12 @@ def test_line_values_at_a_hold_are_the_locals_not_the_last_scan(calc: Monitor) -
     # A value modified at the hold is what the line shows, as the Locals do.
     calc.ok("modify", target="#total", value=7)
     calc.until(lambda m: m.local("total") == 7, "the modified local")
-    calc.until(
-        lambda m: (_line(m, BODY) or {}).get("total") == 7, "the modified line value"
-    )
+    calc.until(lambda m: (_line(m, BODY) or {}).get("total") == 7, "the modified line value")
     assert _disagreements(calc) == []
 
     calc.ok("clear_breakpoint")
     calc.step("statement")  # the FOR's step: i := i + 1, after total := 7 + 3
-    calc.until(
-        lambda m: (_line(m, BODY) or {}).get("total") == 10, "the line after a step"
-    )
+    calc.until(lambda m: (_line(m, BODY) or {}).get("total") == 10, "the line after a step")
     assert (calc.local("i"), calc.local("total")) == (3, 10)
     assert _disagreements(calc) == []
     calc.ok("continue")

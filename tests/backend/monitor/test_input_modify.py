@@ -31,9 +31,9 @@ def live() -> Iterator[LiveServer]:
 @pytest.fixture
 def lamp(live: LiveServer) -> Iterator[Monitor]:
     """The LOOP program (Q0.0 = I0.0), subscribed, in STOP."""
-    session_id = live.create(
-        [source("prog.awl", LOOP_PROGRAM), source("io.sdf", PLANT_SYMBOLS)]
-    )["id"]
+    session_id = live.create([source("prog.awl", LOOP_PROGRAM), source("io.sdf", PLANT_SYMBOLS)])[
+        "id"
+    ]
     with live.monitor(session_id) as client:
         client.ok("subscribe_cpu")
         yield client
@@ -52,9 +52,7 @@ def test_a_modified_input_bit_holds_over_many_scans_and_drives_the_program(
     lamp.until_value("PIB0", 1)
     assert lamp.cpu is not None
     scans = lamp.cpu["scans"]
-    lamp.until(
-        lambda m: m.cpu is not None and m.cpu["scans"] > scans + 20, "20 more scans"
-    )
+    lamp.until(lambda m: m.cpu is not None and m.cpu["scans"] > scans + 20, "20 more scans")
     assert lamp.value("I0.0") is True
     assert lamp.value("Q0.0") is True
     # Modified back, it holds FALSE likewise; set_input and modify agree.
@@ -71,9 +69,7 @@ def test_a_modified_input_word_holds_and_a_force_still_wins(lamp: Monitor) -> No
     lamp.until_value("PIW64", 13824)
     assert lamp.cpu is not None
     scans = lamp.cpu["scans"]
-    lamp.until(
-        lambda m: m.cpu is not None and m.cpu["scans"] > scans + 20, "20 more scans"
-    )
+    lamp.until(lambda m: m.cpu is not None and m.cpu["scans"] > scans + 20, "20 more scans")
     assert lamp.value("IW64") == 13824
     # A force wins over the modified value at every PII update.
     lamp.ok("modify", target="I0.0", value=True)

@@ -36,18 +36,14 @@ def _project(live: LiveServer, name: str) -> int:
     assert response.status_code == 201, response.text
     project_id: int = response.json()["id"]
     for file, text in (("plant.awl", PLANT_PROGRAM), ("plant.sdf", PLANT_SYMBOLS)):
-        saved = live.http.put(
-            f"/api/projects/{project_id}/files/{file}", json={"text": text}
-        )
+        saved = live.http.put(f"/api/projects/{project_id}/files/{file}", json={"text": text})
         assert saved.status_code in (200, 201), saved.text
     return project_id
 
 
 def _download(live: LiveServer, project_id: int) -> dict[str, Any]:
     # Compiling may take longer than one wait on a busy machine.
-    response = live.http.post(
-        f"/api/projects/{project_id}/sessions", json={}, timeout=60
-    )
+    response = live.http.post(f"/api/projects/{project_id}/sessions", json={}, timeout=60)
     assert response.status_code == 201, response.text
     body: dict[str, Any] = response.json()
     return body
@@ -118,9 +114,7 @@ def test_a_client_attaching_after_the_first_left_finds_cpu_forces_breakpoints_an
             first.ok("trend", entries=["MW30"])
             first.ok("run")
             first.until_scans(5)
-            bp = first.ok(
-                "set_breakpoint", location={"file": "plant.awl", "line": line}
-            )
+            bp = first.ok("set_breakpoint", location={"file": "plant.awl", "line": line})
             first.until_held()
             first.until(lambda m: len(m.trend) > 0, "trend samples")
         # The first client is gone (a reload); the page finds the session by its project.
@@ -139,9 +133,7 @@ def test_a_client_attaching_after_the_first_left_finds_cpu_forces_breakpoints_an
             assert breakpoint["file"] == "plant.awl"
             assert breakpoint["condition"] is None
             # The reloaded page sets the project's breakpoints again: the same one, no duplicate.
-            again = second.ok(
-                "set_breakpoint", location={"file": "plant.awl", "line": line}
-            )
+            again = second.ok("set_breakpoint", location={"file": "plant.awl", "line": line})
             assert again["id"] == bp["id"]
             assert len(second.ok("session_state")["breakpoints"]) == 1
             # Asking for the same trend starts with the samples recorded before the reload.
@@ -153,9 +145,7 @@ def test_a_client_attaching_after_the_first_left_finds_cpu_forces_breakpoints_an
             before = state["scans"]
             second.ok("continue")
             second.until(
-                lambda m: (
-                    m.hold is not None and m.cpu is not None and m.cpu["scans"] > before
-                ),
+                lambda m: m.hold is not None and m.cpu is not None and m.cpu["scans"] > before,
                 "the next hold at the same breakpoint",
             )
             second.ok("clear_breakpoint", id=None)
@@ -177,9 +167,7 @@ def test_a_second_tab_gets_the_trend_history_of_the_first(live: LiveServer) -> N
             # A different trend in a tab starts empty and leaves the other tab's alone.
             second.ok("trend", entries=["MW20"])
             second.drain(0.2)
-            assert all(
-                sample["scan"] > first.trend[0]["scan"] for sample in second.trend
-            )
+            assert all(sample["scan"] > first.trend[0]["scan"] for sample in second.trend)
             assert first.ok("session_state")["trend"] in (["MW30"], ["MW20"])
     finally:
         live.delete(session_id)
@@ -195,9 +183,7 @@ def test_a_session_whose_last_client_left_is_closed_after_the_idle_time(
         time.sleep(2 * IDLE_SECONDS)  # connected: never idle, however long
         assert _exists(live, session_id)
     left = time.monotonic()
-    wait_for(
-        lambda: not _exists(live, session_id), "the idle session to close", timeout=5
-    )
+    wait_for(lambda: not _exists(live, session_id), "the idle session to close", timeout=5)
     assert time.monotonic() - left >= IDLE_SECONDS * 0.9
     assert _of_project(live, project_id) == []  # its slot is free
 

@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 
 from nasaq.workbench import outline as outline_module
+from nasaq.workbench.names import language_of
 from nasaq.workbench.outline import OutlineBlock, ProjectOutline, outline
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples" / "projects"
@@ -52,7 +53,9 @@ END_FUNCTION
 def _example(name: str) -> list[tuple[str, str]]:
     folder = EXAMPLES / name
     return [
-        (path.name, path.read_text()) for path in sorted(folder.iterdir()) if path.suffix != ".yaml"
+        (path.name, path.read_text())
+        for path in sorted(folder.iterdir())
+        if path.is_file() and language_of(path.name) is not None
     ]
 
 
