@@ -3,7 +3,8 @@
  * a forced input and a breakpoint; a reload attaches the page to the same CPU (still holding at
  * the breakpoint, the force marker and the breakpoint's red dot shown, the breakpoint holding
  * again after a continue), and another browser opening the project attaches too, its editor
- * showing the breakpoint the session holds (then looked at in Persian).
+ * showing the breakpoint the session holds and the trend the session recorded (then looked at
+ * in Persian).
  */
 import type { Page } from '@playwright/test';
 import { test, expect, chooseLanguage, expandProject, openFile, visibleEditor } from './fixtures';
@@ -29,6 +30,9 @@ async function caretTo(page: Page, line: number): Promise<void> {
     editor?.focus();
   }, line);
 }
+
+/** How many samples the trend's plot holds. */
+const samples = async (page: Page) => Number(await page.getByTestId('trend-plot').getAttribute('data-samples'));
 
 const scans = async (page: Page) => Number((await page.getByTestId('cpu-scans').textContent())?.replace(/\D/g, ''));
 
@@ -62,6 +66,12 @@ test('a reload and another browser attach to the running CPU with its force and 
   await page.getByTestId('io-force-I0.2').click();
   await expect(page.getByTestId('io-forced-I0.2')).toBeVisible();
 
+  // The trend records the motor while it runs: the server keeps its history for the project.
+  await page.getByTestId('panel-tab-trend').click();
+  await page.getByTestId('trend-add-entry').fill('"Motor"');
+  await page.getByTestId('trend-add').click();
+  await expect.poll(() => samples(page)).toBeGreaterThan(3);
+
   // A breakpoint on `= "Motor"`: the CPU holds there.
   const assign = await lineOf(page, '=     "Motor"');
   expect(assign).toBeGreaterThan(0);
@@ -80,6 +90,9 @@ test('a reload and another browser attach to the running CPU with its force and 
   const after = (await (await page.request.get(`/api/sessions?project_id=${projectId}`)).json()) as Array<{ id: string; clients: number[] }>;
   expect(after.map((session) => session.id)).toEqual([before[0]!.id]);
   expect(after[0]!.clients).toHaveLength(1); // the old page's socket is gone, the new one attached
+  // The trend shows the history recorded before the reload.
+  await page.getByTestId('panel-tab-trend').click();
+  await expect.poll(() => samples(page)).toBeGreaterThan(3);
   await page.screenshot({ path: testInfo.outputPath('reattached-en.png') });
 
   // The breakpoint still holds: continue, and the CPU holds there again one scan later.
@@ -95,9 +108,13 @@ test('a reload and another browser attach to the running CPU with its force and 
     await second.goto('/');
     await expandProject(second, 'motor-start-stop');
     await expectAttached(second, projectId);
+    // With nothing stored in this browser, the trend takes the entries the session records.
+    await second.getByTestId('panel-tab-trend').click();
+    await expect.poll(() => samples(second)).toBeGreaterThan(3);
     await chooseLanguage(second, 'fa');
     await expect(second.locator('html')).toHaveAttribute('dir', 'rtl');
     await expect(second.getByTestId('cpu-state')).toHaveAttribute('data-mode', 'hold');
+    await second.getByTestId('panel-tab-io').click();
     await expect(second.getByTestId('io-forced-I0.2')).toBeVisible();
     await expect(visibleEditor(second).locator('.nasaq-bp')).toHaveCount(1);
     await second.screenshot({ path: testInfo.outputPath('reattached-fa.png') });
