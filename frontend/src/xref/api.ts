@@ -2,8 +2,7 @@
  * Cross-references, the assignment list and rename (backend `nasaq.api.xref`). Failures are
  * {@link ApiError}s with the catalogue's code (XRF7xx), as for every call.
  */
-import { ApiError, CLIENT_ERROR_CODES } from '../api/client';
-import type { ApiProblem } from '../api/types';
+import { request as call } from '../api/client';
 
 export type Access = 'read' | 'write' | 'read_write' | 'set' | 'reset' | 'start' | 'count' | 'enable' | 'call' | 'open';
 
@@ -88,39 +87,6 @@ export interface UndoFile {
 
 export interface RenameApplied extends RenamePreview {
   undo: UndoFile[];
-}
-
-function clientProblem(code: string, key: string, message: string, status: number): ApiError {
-  const body: ApiProblem = { code, key, message, params: { status } };
-  return new ApiError(body, status);
-}
-
-async function call<T>(url: string, init: RequestInit = {}): Promise<T> {
-  const headers = new Headers(init.headers);
-  headers.set('Accept', 'application/json');
-  if (init.body !== undefined) headers.set('Content-Type', 'application/json');
-  let response: Response;
-  try {
-    response = await fetch(url, { ...init, headers });
-  } catch (cause) {
-    if (cause instanceof DOMException && cause.name === 'AbortError') throw cause;
-    throw clientProblem(CLIENT_ERROR_CODES.unreachable, 'server_unreachable', 'The Nasaq server cannot be reached.', 0);
-  }
-  let body: unknown = null;
-  try {
-    body = await response.json();
-  } catch {
-    body = null;
-  }
-  if (response.ok && body !== null) return body as T;
-  const error = (body as { error?: ApiProblem } | null)?.error;
-  if (error && typeof error.code === 'string' && typeof error.key === 'string') throw new ApiError(error, response.status);
-  throw clientProblem(
-    CLIENT_ERROR_CODES.badResponse,
-    'unexpected_response',
-    `The server answered HTTP ${response.status} without an answer.`,
-    response.status,
-  );
 }
 
 const base = (projectId: number) => `/api/projects/${projectId}`;
