@@ -5,30 +5,7 @@
  * a step and a continue move on.
  */
 import type { Page } from '@playwright/test';
-import { test, expect, chooseLanguage, visibleEditor, tree, expandProject, openFile } from './fixtures';
-
-type Monaco = typeof import('monaco-editor/editor/editor.api');
-type WithMonaco = Window & { monaco: Monaco };
-
-
-/** The 1-based line of the editor in front whose text contains `text`. */
-function lineOf(page: Page, text: string): Promise<number> {
-  return page.evaluate((wanted) => {
-    const editor = (window as WithMonaco).monaco.editor.getEditors().find((e) => e.getDomNode()?.offsetParent !== null);
-    const index = editor?.getModel()?.getLinesContent().findIndex((line) => line.includes(wanted)) ?? -1;
-    return index + 1;
-  }, text);
-}
-
-/** Puts the caret on `line` of the editor in front and gives it the focus. */
-async function caretTo(page: Page, line: number): Promise<void> {
-  await page.evaluate((target) => {
-    const editor = (window as WithMonaco).monaco.editor.getEditors().find((e) => e.getDomNode()?.offsetParent !== null);
-    editor?.setPosition({ lineNumber: target, column: 1 });
-    editor?.revealLineInCenter(target);
-    editor?.focus();
-  }, line);
-}
+import { test, expect, chooseLanguage, visibleEditor, tree, expandProject, openFile, lineOf, caretTo } from './fixtures';
 
 async function download(page: Page): Promise<void> {
   await page.getByTestId('cpu-download').click();

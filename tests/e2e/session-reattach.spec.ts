@@ -7,29 +7,7 @@
  * in Persian).
  */
 import type { Page } from '@playwright/test';
-import { test, expect, chooseLanguage, expandProject, openFile, visibleEditor } from './fixtures';
-
-type Monaco = typeof import('monaco-editor/editor/editor.api');
-type WithMonaco = Window & { monaco: Monaco };
-
-/** The 1-based line of the editor in front whose text contains `text`. */
-function lineOf(page: Page, text: string): Promise<number> {
-  return page.evaluate((wanted) => {
-    const editor = (window as WithMonaco).monaco.editor.getEditors().find((e) => e.getDomNode()?.offsetParent !== null);
-    const index = editor?.getModel()?.getLinesContent().findIndex((line) => line.includes(wanted)) ?? -1;
-    return index + 1;
-  }, text);
-}
-
-/** Puts the caret on `line` of the editor in front and gives it the focus. */
-async function caretTo(page: Page, line: number): Promise<void> {
-  await page.evaluate((target) => {
-    const editor = (window as WithMonaco).monaco.editor.getEditors().find((e) => e.getDomNode()?.offsetParent !== null);
-    editor?.setPosition({ lineNumber: target, column: 1 });
-    editor?.revealLineInCenter(target);
-    editor?.focus();
-  }, line);
-}
+import { test, expect, chooseLanguage, expandProject, openFile, visibleEditor, lineOf, caretTo } from './fixtures';
 
 /** How many samples the trend's plot holds. */
 const samples = async (page: Page) => Number(await page.getByTestId('trend-plot').getAttribute('data-samples'));
