@@ -18,13 +18,15 @@ COPY backend/ backend/
 RUN pip install --no-cache-dir --constraint backend/requirements.lock './backend[postgres]'
 COPY --from=frontend /src/frontend/dist /app/frontend/dist
 COPY examples/projects/ /app/examples/projects/
+COPY examples/lessons/ /app/examples/lessons/
 RUN useradd --system --uid 10001 --home-dir /app nasaq && mkdir /data && chown nasaq /data
 USER nasaq
 ENV NASAQ_HOST=0.0.0.0 \
     NASAQ_PORT=8000 \
     NASAQ_DATA_DIR=/data \
     NASAQ_FRONTEND_DIST=/app/frontend/dist \
-    NASAQ_EXAMPLES_DIR=/app/examples/projects
+    NASAQ_EXAMPLES_DIR=/app/examples/projects \
+    NASAQ_LESSONS_DIR=/app/examples/lessons
 EXPOSE 8000
 VOLUME ["/data"]
 HEALTHCHECK --interval=30s --timeout=5s --start-period=20s \

@@ -22,6 +22,7 @@ help:
 	@echo "                  and a 5,000-line SCL source, scrolled and monitored (Chromium);"
 	@echo "                  a 500-network LAD block opened, scrolled and monitored, and the"
 	@echo "                  elkjs layout of a 40-box FBD network in its worker"
+	@echo "                  a lesson's Check with a tank in closed loop over 60 s virtual"
 	@echo "make conformance  awlsim's self-checking STL programs (downloads awlsim from PyPI)"
 	@echo "make install | make lock (re-pin Python dependencies) | make clean"
 
@@ -53,6 +54,7 @@ bench: install chromium
 	$(BIN)/python -m nasaq.cpu.bench
 	$(BIN)/python -m nasaq.lang.scl.compile_bench
 	$(BIN)/python -m nasaq.monitor.bench
+	$(BIN)/python tests/bench/lesson_check.py
 	npm exec -- playwright test -c tests/e2e/bench/playwright.bench.config.ts
 
 conformance: install

@@ -80,7 +80,7 @@ def read_junit(report: Path) -> tuple[int, int, int]:
 
 def suites() -> list[Suite]:
     ruff = str(VENV_BIN / "ruff")
-    python_paths = ["backend", "tests/backend", "tests/conformance", "tests/corpus"]
+    python_paths = ["backend", "tests/backend", "tests/bench", "tests/conformance", "tests/corpus"]
     python_paths.append("tests/run_suites.py")
     ruff_config = ["--config", "backend/pyproject.toml"]
     npm = shutil.which("npm") or "npm"

@@ -89,6 +89,16 @@ def _test(_settings: Settings, args: argparse.Namespace) -> int:
     return test_main(args.scenarios, sys.stdout)
 
 
+def _lessons(settings: Settings, args: argparse.Namespace) -> int:
+    from nasaq.lessons import report
+
+    if args.action == "check":
+        return report.check_main(args.paths, settings.lessons_dir, sys.stdout)
+    if args.action == "lint":
+        return report.lint_main(args.paths, settings.lessons_dir, sys.stdout)
+    return report.list_main(settings.lessons_dir, args.lang, sys.stdout)
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="nasaq", description=__doc__)
     parser.add_argument("--version", action="version", version=f"nasaq {__version__}")
@@ -169,6 +179,20 @@ def build_parser() -> argparse.ArgumentParser:
     test = commands.add_parser("test", help="run scenario files (PLC unit tests)")
     test.add_argument("scenarios", nargs="+", metavar="SCENARIO", help="YAML files or folders")
     test.set_defaults(handler=_test)
+
+    lessons = commands.add_parser("lessons", help="check, lint or list the course's lessons")
+    lesson_actions = lessons.add_subparsers(dest="action", required=True)
+    for action, text in (
+        ("check", "each solution passes every check, each start/ and wrong/ fails one"),
+        ("lint", "texts in every language, links, plant wiring, hints, check files"),
+    ):
+        found = lesson_actions.add_parser(action, help=text)
+        found.add_argument(
+            "paths", nargs="*", metavar="PATH", help="course, unit or lesson folders (default: all)"
+        )
+    listed = lesson_actions.add_parser("list", help="the units and lessons of the course")
+    listed.add_argument("--lang", choices=["en", "ar", "fa", "vi"], default="en")
+    lessons.set_defaults(handler=_lessons)
 
     migrate = commands.add_parser("migrate", help="create or upgrade the database schema")
     migrate.set_defaults(handler=_migrate)

@@ -38,6 +38,10 @@ class Settings(BaseSettings):
         description="Example projects (one folder each) imported on the first start only; "
         "a missing folder imports none.",
     )
+    lessons_dir: Path = Field(
+        default=_REPO_ROOT / "examples" / "lessons",
+        description="The course: one folder per unit, one per lesson (examples/lessons/README.md).",
+    )
     log_level: str = Field(default="info", description="Log level of the server.")
     session_workers: int | None = Field(
         default=None,

@@ -15,7 +15,7 @@ from nasaq.settings import Settings
 # Test helper modules live beside the tests that use them; this file is loaded however pytest is
 # started (with or without backend/pyproject.toml as its config), so it puts them on the path.
 _HERE = Path(__file__).resolve().parent
-for _folder in ("cpu", "lang", "lang/stl", "lang/scl", "lang/lad", "workbench"):
+for _folder in ("cpu", "lang", "lang/stl", "lang/scl", "lang/lad", "workbench", "plants"):
     if str(_HERE / _folder) not in sys.path:
         sys.path.insert(0, str(_HERE / _folder))
 

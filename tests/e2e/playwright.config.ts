@@ -11,6 +11,7 @@ export const baseURL = `http://127.0.0.1:${port}`;
 // Each port gets its own folder, so runs on different ports (E2E_PORT) can go side by side.
 const output = path.join(__dirname, '.output', port === 8765 ? '' : String(port));
 const dataDir = path.join(output, 'data');
+const DOCS = /(screenshots|lesson-plants|lessons|plant-tank|io-panel|watch-tables|xref-rename)\.spec\.ts$/;
 
 export default defineConfig({
   testDir: '.',
@@ -43,6 +44,13 @@ export default defineConfig({
       ],
     },
   },
+  // The specs that take the README's screenshots run first, on the fresh database, so the
+  // project tree in the pictures holds the example projects and their own, not the hundred
+  // projects the other specs leave behind.
+  projects: [
+    { name: 'screenshots', testMatch: DOCS },
+    { name: 'flows', testIgnore: DOCS, dependencies: ['screenshots'] },
+  ],
   webServer: {
     command: `rm -rf "${dataDir}" && "${path.join(root, '.venv/bin/nasaq')}" serve --port ${port}`,
     cwd: root,

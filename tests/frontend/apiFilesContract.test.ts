@@ -58,7 +58,7 @@ describe('project files API types match the OpenAPI document', () => {
   });
 
   it('the enums are the backend’s', () => {
-    const languages: Record<FileInfo['language'], true> = { stl: true, scl: true, lad: true, fbd: true, symbols: true, watch: true, cpu: true };
+    const languages: Record<FileInfo['language'], true> = { stl: true, scl: true, lad: true, fbd: true, symbols: true, watch: true, cpu: true, plant: true };
     expect(keys(languages)).toEqual([...(schemas.FileInfo!.properties!.language!.enum ?? [])].sort());
     const blockLanguages: Record<TreeBlock['language'], true> = { stl: true, scl: true, lad: true, fbd: true };
     expect(keys(blockLanguages)).toEqual([...(schemas.TreeBlock!.properties!.language!.enum ?? [])].sort());

@@ -28,7 +28,7 @@ function selectedTab() {
 }
 
 describe('bottom panel', () => {
-  it('is a tab list with Diagnostics, Watch table, Trend, I/O, Call stack, Cross-references and Assignment list, Diagnostics first', () => {
+  it('is a tab list with Diagnostics, Watch table, Trend, I/O, Plant, Call stack, Cross-references and Assignment list, Diagnostics first', () => {
     healthyServer();
     renderApp();
     expect(screen.getByRole('tablist', { name: 'Output panels' })).toBeTruthy();
@@ -37,6 +37,7 @@ describe('bottom panel', () => {
       'Watch table',
       'Trend',
       'I/O',
+      'Plant',
       'Call stack',
       'Cross-references',
       'Assignment list',
@@ -66,7 +67,7 @@ describe('bottom panel', () => {
   it('moves between tabs with the arrow keys, Home and End, with one tab stop', async () => {
     healthyServer();
     const { user } = renderApp();
-    const [diagnostics, watch, trend, io, debug, xref, assignments] = screen.getAllByRole('tab');
+    const [diagnostics, watch, trend, io, plant, debug, xref, assignments] = screen.getAllByRole('tab');
     expect([diagnostics, watch, trend, io, debug].map((tab) => tab!.tabIndex)).toEqual([0, -1, -1, -1, -1]);
 
     diagnostics!.focus();
@@ -78,6 +79,8 @@ describe('bottom panel', () => {
     expect(document.activeElement).toBe(trend);
     await user.keyboard('{ArrowRight}');
     expect(document.activeElement).toBe(io);
+    await user.keyboard('{ArrowRight}');
+    expect(document.activeElement).toBe(plant);
     await user.keyboard('{ArrowRight}');
     expect(document.activeElement).toBe(debug);
     await user.keyboard('{ArrowRight}');

@@ -83,6 +83,8 @@ export function frame(overrides: Partial<Frame> & { seq: number }): Frame {
     hold: null,
     released: false,
     diagnostics: null,
+    plant: null,
+    plant_removed: false,
     ...overrides,
   };
 }

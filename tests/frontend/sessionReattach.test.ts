@@ -37,11 +37,11 @@ describe('the hold sent again at attach', () => {
       locals: [],
       call_stack: [],
     } as unknown as HoldState;
-    const first = mergeFrame(initialMonitorState(), { type: 'frame', seq: 1, cpu: null, watch: null, block: null, trend: null, hold, released: false, diagnostics: null });
-    const again = mergeFrame(first, { type: 'frame', seq: 2, cpu: null, watch: null, block: null, trend: null, hold: { ...hold }, released: false, diagnostics: null });
+    const first = mergeFrame(initialMonitorState(), { type: 'frame', seq: 1, cpu: null, watch: null, block: null, trend: null, hold, released: false, diagnostics: null, plant: null, plant_removed: false });
+    const again = mergeFrame(first, { type: 'frame', seq: 2, cpu: null, watch: null, block: null, trend: null, hold: { ...hold }, released: false, diagnostics: null, plant: null, plant_removed: false });
     expect(again.hold).toBe(first.hold);
     const moved = { ...hold, breakpoint: 2 } as HoldState;
-    const next = mergeFrame(again, { type: 'frame', seq: 3, cpu: null, watch: null, block: null, trend: null, hold: moved, released: false, diagnostics: null });
+    const next = mergeFrame(again, { type: 'frame', seq: 3, cpu: null, watch: null, block: null, trend: null, hold: moved, released: false, diagnostics: null, plant: null, plant_removed: false });
     expect(next.hold).toBe(moved);
   });
 });

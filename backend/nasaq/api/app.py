@@ -20,7 +20,9 @@ from nasaq.api import (
     files,
     health,
     lad,
+    lessons,
     outline,
+    plants,
     projects,
     sessions,
     symbols,
@@ -90,6 +92,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     api.include_router(lad.router)
     api.include_router(xref.router)
     api.include_router(examples.router)
+    api.include_router(lessons.router)
+    api.include_router(plants.router)
     app.include_router(api)
     install_docs(app)
     install_frontend(app, settings.frontend_dist)  # last: its catch-all route must come after

@@ -90,7 +90,10 @@ def pool_of(state: object) -> WorkerPool:
 
 
 def _api_error(error: MonitorError) -> ApiError:
-    return ApiError(error.code, _STATUS.get(error.code, 400), **error.params)
+    # A plant file that cannot run (PLT###, nasaq.plants.plant_file) is refused as a program
+    # that does not compile is.
+    fallback = 422 if error.code.startswith("PLT") else 400
+    return ApiError(error.code, _STATUS.get(error.code, fallback), **error.params)
 
 
 def _sources(items: list[Source]) -> list[tuple[str, str]]:

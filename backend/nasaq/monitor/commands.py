@@ -66,4 +66,10 @@ def command(session: Session, client: int, message: Any) -> Callable[[], Any]:
             return lambda: s.do_step(by, into)
         case p.RunScans(count=count):
             return lambda: s.do_run_scans(count)
+        case p.PlantOperate(control=control, value=value):
+            return lambda: s.do_plant_operate(control, int(value))
+        case p.PlantFault(fault=fault, on=on):
+            return lambda: s.do_plant_fault(fault, on)
+        case p.PlantReset():
+            return s.do_plant_reset
     raise AssertionError(f"unhandled message {message!r}")

@@ -32,6 +32,7 @@ class FrameState:
         self.block_sent: p.BlockStatus | None = None
         self.hold: p.HoldState | None = None
         self.diagnostics = -1
+        self.plant: p.PlantFrame | None = None
 
     def frame(self, snap: Snapshot, view: ClientView, session: Session) -> p.Frame | None:
         """The changes ``snap`` brings this client; None when there are none."""
@@ -82,6 +83,11 @@ class FrameState:
                 ]
                 changed = True
             self.diagnostics = snap.diagnostics
+        if snap.plant is not self.plant:
+            if snap.plant is None:
+                frame.plant_removed = True
+            frame.plant = self.plant = snap.plant
+            changed = True
         self.seq = snap.seq
         return frame if changed else None
 
@@ -98,6 +104,10 @@ def merge(texts: list[str]) -> str:
         for key in ("cpu", "block"):
             if b.get(key) is not None:
                 merged[key] = b[key]
+        if b.get("plant_removed"):
+            merged["plant_removed"], merged["plant"] = True, None
+        elif b.get("plant") is not None:
+            merged["plant_removed"], merged["plant"] = False, b["plant"]
         if b.get("watch"):
             merged["watch"] = {**(merged.get("watch") or {}), **b["watch"]}
         for key in ("trend", "diagnostics"):

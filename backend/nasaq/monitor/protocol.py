@@ -174,6 +174,33 @@ class RunScans(_Message):
     count: int = Field(ge=1, le=1_000_000)
 
 
+# -- client -> server: the virtual plant (a project's ``.plant`` file) ---------------------------
+
+
+class PlantOperate(_Message):
+    """The operator panel: presses, releases or turns a plant's control. ``value`` is the level
+    the PLC input sees (an NC stop button pressed is 0), a word control's value 0..65535."""
+
+    type: Literal["plant_operate"]
+    control: str = Field(min_length=1, max_length=64)
+    value: StrictInt | bool
+
+
+class PlantFault(_Message):
+    """Injects (``on``) or clears an injectable fault of the plant (a stuck sensor, a jam)."""
+
+    type: Literal["plant_fault"]
+    fault: str = Field(min_length=1, max_length=64)
+    on: bool = True
+
+
+class PlantReset(_Message):
+    """Puts the plant back in its initial state: its raised faults cleared, the faults the
+    plant file injects from the start injected again."""
+
+    type: Literal["plant_reset"]
+
+
 ClientMessage = Annotated[
     SubscribeCpu
     | Watch
@@ -192,7 +219,10 @@ ClientMessage = Annotated[
     | ClearBreakpoint
     | Continue
     | Step
-    | RunScans,
+    | RunScans
+    | PlantOperate
+    | PlantFault
+    | PlantReset,
     Field(discriminator="type"),
 ]
 CLIENT_MESSAGE: TypeAdapter[ClientMessage] = TypeAdapter(ClientMessage)
@@ -315,6 +345,20 @@ class BlockStatus(BaseModel):
     elements: list[ElementStatus] = Field(default_factory=list)
 
 
+class PlantFrame(BaseModel):
+    """The session's virtual plant as the drawing animates it: ``state`` (levels, positions,
+    counts; what a scenario's ``plant.<name>`` expects), every signal's value (sensors and panel
+    controls as the PLC inputs get them, actuators as the outputs drive them), the active faults
+    and the wiring (signal -> address)."""
+
+    kind: str
+    time_ms: int = Field(description="Virtual time the plant has run")
+    state: dict[str, bool | int | float | str]
+    signals: dict[str, int]
+    faults: list[str]
+    wiring: dict[str, str]
+
+
 class Frame(BaseModel):
     type: Literal["frame"] = "frame"
     seq: int
@@ -325,6 +369,12 @@ class Frame(BaseModel):
     hold: HoldState | None = None
     released: bool = Field(default=False, description="The hold of the previous frame has ended")
     diagnostics: list[DiagnosticEntry] | None = None
+    plant: PlantFrame | None = Field(
+        default=None, description="The virtual plant, when it changed (null: unchanged or none)"
+    )
+    plant_removed: bool = Field(
+        default=False, description="A download took the plant away (the project has none now)"
+    )
 
 
 class TrendSample(BaseModel):

@@ -62,6 +62,7 @@ from nasaq.monitor.element_status import ElementStatusBuilder
 from nasaq.monitor.errors import MonitorError
 from nasaq.monitor.frames import FrameState
 from nasaq.monitor.lad_blocks import lad_blocks
+from nasaq.monitor.plant_link import PlantLink, no_plant, plant_of
 from nasaq.monitor.protocol import (
     BlockStatus,
     CpuState,
@@ -69,6 +70,7 @@ from nasaq.monitor.protocol import (
     ForcedValue,
     HoldState,
     Location,
+    PlantFrame,
     StepKind,
     TimeModeName,
     TrendSample,
@@ -117,6 +119,7 @@ class Snapshot:
     blocks: dict[Key, BlockStatus]
     hold: HoldState | None
     diagnostics: int  # entries ever made in the diagnostic buffer
+    plant: PlantFrame | None = None  # the same object while the plant did not change
 
 
 class Session:
@@ -140,6 +143,8 @@ class Session:
         # The project's cpu.properties (if any) sets the rest; the API resolved profile and cycle.
         self.properties = properties_of(_pairs(self.sources)).properties
         self.cpu = _cpu(self.program, self.properties, profile, cycle_ms)
+        found = plant_of(self.sources)  # the project's .plant file (nasaq.monitor.plant_link)
+        self.plant = None if found is None else PlantLink(found, self.cpu)
         self.time_mode: TimeModeName = time_mode
         self._resume_mode: TimeModeName = "virtual" if time_mode == "pause" else time_mode
         self.cpu_share = cpu_share
@@ -447,6 +452,7 @@ class Session:
                 "MON607", action=phrase("act_download"), reason=phrase("switch_to_stop")
             )
         program = compile_download(sources)
+        plant = plant_of(sources)  # a bad plant file refuses the download, as a bad program does
         cycle_ms, properties = self.cpu.cycle_ms, self.properties
         if find(_pairs(sources)) is not None:  # a download carries the CPU properties too
             properties = properties_of(_pairs(sources)).properties
@@ -458,6 +464,7 @@ class Session:
         self.program = program
         self.lad = lad_blocks(self.sources, program)
         self.cpu = cpu
+        self.plant = None if plant is None else PlantLink(plant, cpu)  # the process starts again
         self._infos.clear()
         self._recorders.clear()
         self._block_status.clear()
@@ -467,6 +474,21 @@ class Session:
         self.breakpoint_places.clear()
         self.kept_trend = None
         return {"changed": changed}
+
+    def do_plant_operate(self, control: str, value: int) -> None:
+        if self.plant is None:
+            raise no_plant()
+        self.plant.operate(self.cpu, control, value)
+
+    def do_plant_fault(self, fault: str, on: bool) -> None:
+        if self.plant is None:
+            raise no_plant()
+        self.plant.fault(fault, on)
+
+    def do_plant_reset(self) -> None:
+        if self.plant is None:
+            raise no_plant()
+        self.plant.reset(self.cpu)
 
     def view(self, client: int) -> ClientView:
         found = self.clients.get(client)
@@ -769,9 +791,14 @@ class Session:
         base = self._due if now - late <= self._due <= now + cycle else now
         self._due = base + cycle
         self._held_time = 0.0
+        plant = self.plant
+        if plant is not None:
+            plant.before_scan(cpu)
         started = time.perf_counter()
         cpu.scan()
         elapsed = time.perf_counter() - started - self._held_time
+        if plant is not None:
+            plant.after_scan(cpu)
         if self._abort is not None:
             action, cold = self._abort
             self._abort = None
@@ -889,6 +916,7 @@ class Session:
             dict(self._block_status),
             self.hold_view,
             self.engine.diagnostic_count,
+            None if self.plant is None else self.plant.frame_view(),
         )
         emit = self.emit
         if emit is None:

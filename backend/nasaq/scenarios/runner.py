@@ -2,169 +2,127 @@
 
 The sources' ``cpu.properties`` (``nasaq.headless.project_file``) sets the CPU; the scenario's
 own ``profile`` and ``cycle_ms``, when the file names them, win over it.
+
+A lesson runs its scenarios against the learner's project: ``run_scenario(path, sources=...,
+plant=...)`` takes the project's files as (name, text) and the lesson's plant; a scenario that
+names its own ``sources`` or ``plant`` keeps them. Failures on an address say where the program
+last writes it (``where.py``); a CPU that went to STOP by an error fails the scenario with its
+stop reason, unless a step expected the mode.
 """
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass, field
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 from nasaq.cpu import Cpu, Profile
+from nasaq.diagnostics import Diagnostic
 from nasaq.headless import project_file
-from nasaq.headless.addresses import (
-    AddressError,
-    CounterAddress,
-    TimerAddress,
-    address_text,
-    as_real,
-    encode_value,
-    parse_address,
-    parse_number,
-    signed,
-)
-from nasaq.headless.sources import SourceError, compile_files, diagnostic_line
-from nasaq.ir import Area, Direct, Width
-from nasaq.scenarios.model import Scenario, ScenarioError, Step, load_scenario
+from nasaq.headless.addresses import AddressError
+from nasaq.headless.sources import SourceError, diagnostic_line, read_source
+from nasaq.lang.stl import SourceFile, compile_sources
+from nasaq.plants.base import PlantError
+from nasaq.plants.runtime import PlantConfig, PlantRuntime
+from nasaq.scenarios.model import Scenario, ScenarioError, load_scenario
+from nasaq.scenarios.result import Failure, ScenarioResult
+from nasaq.scenarios.steps import Execution
+from nasaq.workbench.cpu_properties import ReadProperties, is_properties_file, read_properties
+from nasaq.workbench.names import language_of
+
+__all__ = ["Failure", "ScenarioResult", "run_loaded", "run_scenario"]
+
+_COMPILED = frozenset({"stl", "scl", "lad", "fbd", "symbols"})
 
 
-@dataclass(frozen=True, slots=True)
-class Failure:
-    step: int  # 1-based, as the file lists them
-    note: str | None
-    address: str
-    expected: str
-    actual: str
-
-    def describe(self) -> str:
-        note = f" ({self.note})" if self.note else ""
-        return f"step {self.step}{note}: {self.address} expected {self.expected}, got {self.actual}"
+def _project_files(sources: Sequence[tuple[str, str]]) -> list[SourceFile]:
+    """The files of a project the compiler reads (not ``.plant``, watch tables, properties)."""
+    return [SourceFile(name, text) for name, text in sources if language_of(name) in _COMPILED]
 
 
-@dataclass(slots=True)
-class ScenarioResult:
-    path: Path
-    name: str
-    failures: list[Failure] = field(default_factory=list)
-    error: str | None = None  # the scenario could not run: invalid file, compile errors
-    diagnostics: list[str] = field(default_factory=list)
-
-    @property
-    def passed(self) -> bool:
-        return self.error is None and not self.failures
+def _project_properties(sources: Sequence[tuple[str, str]]) -> ReadProperties | None:
+    for name, text in sources:
+        if is_properties_file(name):
+            return read_properties(text, name)
+    return None
 
 
-def _shown(value: int, width: Width) -> str:
-    if width is Width.BIT:
-        return str(value)
-    digits = int(width) // 4
-    return f"{signed(value, width)} (16#{value:0{digits}X})"
+def run_scenario(
+    path: Path,
+    sources: Sequence[tuple[str, str]] | None = None,
+    plant: PlantConfig | None = None,
+) -> ScenarioResult:
+    """Loads, compiles and runs one scenario file; never raises for a bad file or program.
 
-
-def _check_direct(cpu: Cpu, address: Direct, expected: Any) -> tuple[str, str] | None:
-    """None when ``address`` holds ``expected``, else (expected, actual) as text."""
-    actual = cpu.read(address)
-    tolerance: float | None = None
-    if isinstance(expected, dict):
-        if set(expected) - {"real", "tolerance"} or "real" not in expected:
-            raise ScenarioError(f"{address_text(address)}: write {{real: x, tolerance: t}}")
-        tolerance = float(expected.get("tolerance", 0.0))
-        expected = float(expected["real"])
-    if isinstance(expected, float):
-        if address.width is not Width.DWORD:
-            raise ScenarioError(f"{address_text(address)}: a real needs a doubleword address")
-        if tolerance is None:
-            tolerance = 1e-6 * max(1.0, abs(expected))
-        real = as_real(actual)
-        if math.isclose(real, expected, rel_tol=0.0, abs_tol=tolerance):
-            return None
-        return f"{expected} ± {tolerance}", repr(real)
-    try:
-        pattern = encode_value(
-            address, expected if not isinstance(expected, bool) else int(expected)
-        )
-    except AddressError as exc:
-        raise ScenarioError(str(exc)) from None
-    if pattern == actual:
-        return None
-    return _shown(pattern, address.width), _shown(actual, address.width)
-
-
-def _check(cpu: Cpu, key: str, expected: Any) -> tuple[str, str] | None:
-    if key == "mode":
-        return None if str(expected).upper() == cpu.mode else (str(expected).upper(), cpu.mode)
-    address = parse_address(key)
-    if isinstance(address, Direct):
-        return _check_direct(cpu, address, expected)
-    if not isinstance(expected, dict):
-        raise ScenarioError(f"{key}: write e.g. {{q: 1}} or {{value: 3}} for timers and counters")
-    if isinstance(address, TimerAddress):
-        q, remaining, _running = cpu.timer(address.number)
-        actual = {"q": int(q), "remaining_ms": int(remaining)}
-    else:
-        assert isinstance(address, CounterAddress)
-        q, value = cpu.counter(address.number)
-        actual = {"q": int(q), "value": int(value)}
-    unknown = set(expected) - set(actual)
-    if unknown:
-        raise ScenarioError(f"{key}: unknown field(s) {', '.join(sorted(unknown))}")
-    wanted = {name: int(expected[name]) for name in expected}
-    got = {name: actual[name] for name in expected}
-    return None if wanted == got else (str(wanted), str(got))
-
-
-def _set(cpu: Cpu, key: str, value: Any) -> None:
-    address = parse_address(key)
-    if not isinstance(address, Direct):
-        raise ScenarioError(f"{key}: timers and counters cannot be set")
-    if isinstance(value, str):
-        value = parse_number(value)
-    pattern = encode_value(address, value)
-    if address.area is Area.I:
-        cpu.set_input(address, pattern)
-    else:
-        cpu.write(address, pattern)
-
-
-def _do(
-    cpu: Cpu, scenario: Scenario, index: int, step: Step, note: str | None, result: ScenarioResult
-) -> None:
-    if step.set_ is not None:
-        for key, value in step.set_.items():
-            _set(cpu, str(key), value)
-    elif step.run is not None:
-        for _ in range(step.scans(scenario.cycle_ms)):
-            if cpu.mode != "RUN":
-                break
-            cpu.scan()
-    elif step.expect is not None:
-        for key, expected in step.expect.items():
-            mismatch = _check(cpu, str(key), expected)
-            if mismatch is not None:
-                result.failures.append(Failure(index, note, str(key), *mismatch))
-
-
-def run_scenario(path: Path) -> ScenarioResult:
-    """Loads, compiles and runs one scenario file; never raises for a bad file or program."""
+    ``sources``: the project under test as (file name, text), for a scenario without its own
+    ``sources``; ``plant``: the plant it runs with unless it names its own (or ``none``)."""
     try:
         scenario = load_scenario(path)
     except ScenarioError as exc:
         return ScenarioResult(path, path.stem, error=str(exc))
+    return run_loaded(scenario, path, sources, plant)
+
+
+def _sources_of(
+    scenario: Scenario, path: Path, sources: Sequence[tuple[str, str]] | None
+) -> tuple[list[SourceFile], ReadProperties | None]:
+    if scenario.sources:
+        files = [read_source(source) for source in scenario.source_paths()]
+        return files, project_file.load(scenario.source_paths())
+    if sources is None:
+        raise SourceError(f"{path}: sources: name the program's files (a lesson gives them)")
+    return _project_files(sources), _project_properties(sources)
+
+
+def _file_of(problem: Diagnostic) -> str:
+    return (problem.span.file or "") if problem.span is not None else ""
+
+
+def _line_of(problem: Diagnostic) -> int | None:
+    return problem.span.line if problem.span is not None else None
+
+
+def _diagnostics_missing(scenario: Scenario, problems: list[Diagnostic]) -> list[Failure]:
+    """``expect_diagnostics``: every listed code (at its line and file) must be reported."""
+    failures: list[Failure] = []
+    for wanted in scenario.expect_diagnostics or []:
+        found = any(
+            problem.code == wanted.code
+            and wanted.line in (None, _line_of(problem))
+            and (wanted.file is None or _file_of(problem).endswith(wanted.file))
+            for problem in problems
+        )
+        if not found:
+            place = f" at line {wanted.line}" if wanted.line is not None else ""
+            got = ", ".join(sorted({p.code for p in problems})) or "no diagnostics"
+            failures.append(Failure(0, None, wanted.code, f"{wanted.code}{place}", got))
+    return failures
+
+
+def run_loaded(
+    scenario: Scenario,
+    path: Path,
+    sources: Sequence[tuple[str, str]] | None = None,
+    plant: PlantConfig | None = None,
+) -> ScenarioResult:
+    """Runs an already loaded scenario (see ``run_scenario``)."""
     result = ScenarioResult(path, scenario.name)
     try:
-        compiled = compile_files(scenario.source_paths(), scenario.mnemonics)
+        files, found = _sources_of(scenario, path, sources)
     except SourceError as exc:
         result.error = str(exc)
         return result
+    compiled = compile_sources(files, mnemonics=scenario.mnemonics)
+    result.problems = list(compiled.diagnostics)
     result.diagnostics = [diagnostic_line(d) for d in compiled.diagnostics]
+    if scenario.expect_diagnostics is not None:
+        result.failures = _diagnostics_missing(scenario, result.problems)
+        if compiled.ok:
+            result.failures.append(Failure(0, None, "compile", "diagnostics", "it compiles"))
+        return result
     if not compiled.ok:
         result.error = "the sources do not compile"
-        return result
-    try:
-        found = project_file.load(scenario.source_paths())
-    except SourceError as exc:
-        result.error = str(exc)
+        result.compile_failed = True
         return result
     cold = False
     options: dict[str, Any] = {}
@@ -184,17 +142,25 @@ def run_scenario(path: Path) -> ScenarioResult:
         options = props.cpu_options() | {"profile": Profile(scenario.profile)}
         cold = props.startup == "cold"
     options.setdefault("profile", Profile(scenario.profile))
+    chosen = scenario.plant if scenario.plant is not None else plant
+    runtime: PlantRuntime | None = None
+    if isinstance(chosen, PlantConfig):
+        try:
+            runtime = PlantRuntime(chosen)
+        except (PlantError, AddressError) as exc:
+            result.error = f"{path}: plant: {exc}"
+            return result
     try:
         cpu = Cpu(compiled.program, cycle_ms=scenario.cycle_ms, **options)
     except ValueError as exc:  # e.g. retentive counts the scenario's profile does not have
         result.error = f"{path}: {exc}"
         return result
+    texts = {file.name: file.text if isinstance(file.text, str) else "" for file in files}
+    execution = Execution(cpu, runtime, scenario, compiled.program, texts, result)
     cpu.start(cold=cold)
-    note: str | None = None  # a note names the steps that follow it, until the next note
     try:
-        for index, step in enumerate(scenario.steps, start=1):
-            note = step.note or note
-            _do(cpu, scenario, index, step, note, result)
-    except (ScenarioError, AddressError) as exc:
+        execution.run_steps()
+    except (ScenarioError, AddressError, PlantError) as exc:
         result.error = f"{path}: {exc}"
+    execution.finish()
     return result

@@ -98,3 +98,24 @@ class AppState(Base):
 
     key: Mapped[str] = mapped_column(String(64), primary_key=True)
     value: Mapped[str] = mapped_column(Text, default="")
+
+
+class LessonProgress(Base):
+    """A learner's progress in one lesson, kept with the project the lesson opened (one project
+    per lesson): this row is also what links the project to its lesson. ``time_s`` is the time
+    from the first opening to the last check (to the pass, once passed)."""
+
+    __tablename__ = "lesson_progress"
+    __table_args__ = (UniqueConstraint("project_id", "lesson_id"),)
+
+    id: Mapped[int] = mapped_column(primary_key=True)
+    project_id: Mapped[int] = mapped_column(ForeignKey("projects.id", ondelete="CASCADE"))
+    lesson_id: Mapped[str] = mapped_column(String(64), index=True)
+    status: Mapped[str] = mapped_column(String(16), default="not_started")
+    attempts: Mapped[int] = mapped_column(default=0)
+    time_s: Mapped[int] = mapped_column(default=0)
+    hints_revealed: Mapped[int] = mapped_column(default=0)
+    gave_up: Mapped[bool] = mapped_column(default=False)
+    started_at: Mapped[datetime] = mapped_column(UtcDateTime, default=utc_now)
+    passed_at: Mapped[datetime | None] = mapped_column(UtcDateTime, nullable=True)
+    updated_at: Mapped[datetime] = mapped_column(UtcDateTime, default=utc_now, onupdate=utc_now)

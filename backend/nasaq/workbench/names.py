@@ -2,7 +2,8 @@
 
 A name is what the compiler reads by its suffix (``.awl``/``.stl`` STL, ``.scl`` SCL, ``.lad``
 LAD and ``.fbd`` FBD in their text format, ``.sdf``, ``.asc``, ``.seq``, ``.csv`` symbol tables;
-``.vat`` watch tables and ``cpu.properties`` are project files the compiler skips)
+``.vat`` watch tables, ``cpu.properties`` and ``.plant`` plant files are project files the
+compiler skips)
 and also a plain file in an export, so it avoids what
 any file system or zip tool refuses: path separators, control and reserved characters, Windows'
 device names, a leading dot (hidden files) and a trailing dot or space (Windows drops them).
@@ -16,6 +17,7 @@ from typing import Literal
 from nasaq.lang.stl.compiler import (
     LAD_SUFFIXES,
     MAX_SOURCE_CHARS,
+    PLANT_SUFFIXES,
     SCL_SUFFIXES,
     STL_SUFFIXES,
     WATCH_TABLE_SUFFIXES,
@@ -23,7 +25,7 @@ from nasaq.lang.stl.compiler import (
 from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES
 
 BlockLanguage = Literal["stl", "scl", "lad", "fbd"]
-Language = Literal["stl", "scl", "lad", "fbd", "symbols", "watch", "cpu"]
+Language = Literal["stl", "scl", "lad", "fbd", "symbols", "watch", "cpu", "plant"]
 
 MAX_NAME_CHARS = 128
 MAX_TEXT_CHARS = MAX_SOURCE_CHARS  # the compiler refuses larger sources (STL111)
@@ -50,6 +52,8 @@ def language_of(name: str) -> Language | None:
         return "watch"  # nasaq.workbench.watch_table: no program, the compiler skips it
     if name.lower() == "cpu.properties":
         return "cpu"  # nasaq.workbench.cpu_properties: the one CPU properties file of a project
+    if suffix in PLANT_SUFFIXES:
+        return "plant"  # nasaq.plants.plant_file: the project's virtual plant (YAML)
     return None
 
 

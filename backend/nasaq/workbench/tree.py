@@ -17,6 +17,7 @@ from pydantic import BaseModel, Field
 from nasaq.diagnostics import Diagnostic
 from nasaq.ir import Block, BlockKind
 from nasaq.lang.stl import SourceFile, compile_sources
+from nasaq.plants.plant_file import plant_file_problems
 from nasaq.workbench.names import BlockLanguage, language_of
 
 KindName = Literal["OB", "FB", "FC", "DB", "UDT"]
@@ -106,4 +107,5 @@ def build(sources: list[tuple[str, str]]) -> ProjectBuild:
     """Compiles the files together. Slow for big projects: call it in a thread."""
     result = compile_sources(SourceFile(name, text) for name, text in sources)
     blocks = [entry for _, entry in user_blocks(result.program.blocks.values(), dict(sources))]
-    return ProjectBuild(blocks=blocks, diagnostics=result.diagnostics)
+    plant = plant_file_problems(sources)  # the .plant file, which the compiler skips
+    return ProjectBuild(blocks=blocks, diagnostics=result.diagnostics + plant)

@@ -21,7 +21,10 @@ export type ClientMessage =
   | ClearBreakpoint
   | Continue
   | Step
-  | RunScans;
+  | RunScans
+  | PlantOperate
+  | PlantFault
+  | PlantReset;
 
 /** CPU state in every frame where it changed (mode, scans, clock, cycle statistic). */
 export interface SubscribeCpu {
@@ -188,6 +191,37 @@ export interface RunScans {
 }
 
 /**
+ * The operator panel: presses, releases or turns a plant's control. `value` is the level
+ * the PLC input sees (an NC stop button pressed is 0), a word control's value 0..65535.
+ */
+export interface PlantOperate {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'plant_operate';
+  control: string;
+  value: number | boolean;
+}
+
+/** Injects (`on`) or clears an injectable fault of the plant (a stuck sensor, a jam). */
+export interface PlantFault {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'plant_fault';
+  fault: string;
+  on?: boolean;
+}
+
+/**
+ * Puts the plant back in its initial state: its raised faults cleared, the faults the
+ * plant file injects from the start injected again.
+ */
+export interface PlantReset {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'plant_reset';
+}
+
+/**
  * Where a breakpoint goes: a source line (`file` + `line`, STL or SCL), or a block with
  * an STL instruction index or a network (1-based), or a block with a line of its source.
  */
@@ -238,6 +272,10 @@ export interface Frame {
   /** The hold of the previous frame has ended */
   released: boolean;
   diagnostics: DiagnosticEntry[] | null;
+  /** The virtual plant, when it changed (null: unchanged or none) */
+  plant: PlantFrame | null;
+  /** A download took the plant away (the project has none now) */
+  plant_removed: boolean;
 }
 
 export interface CpuState {
@@ -298,6 +336,22 @@ export interface DiagnosticEntry {
   line: number | null;
   key: string;
   params: Record<string, string | number | boolean | null>;
+}
+
+/**
+ * The session's virtual plant as the drawing animates it: `state` (levels, positions,
+ * counts; what a scenario's `plant.<name>` expects), every signal's value (sensors and panel
+ * controls as the PLC inputs get them, actuators as the outputs drive them), the active faults
+ * and the wiring (signal -> address).
+ */
+export interface PlantFrame {
+  kind: string;
+  /** Virtual time the plant has run */
+  time_ms: number;
+  state: Record<string, boolean | number | string>;
+  signals: Record<string, number>;
+  faults: string[];
+  wiring: Record<string, string>;
 }
 
 /** Wall-clock milliseconds the scans took (the program's work, not the cycle wait). */

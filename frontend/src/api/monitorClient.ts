@@ -27,6 +27,7 @@ import type {
   Hello,
   HoldState,
   Location as ProgramLocation,
+  PlantFrame,
   ServerMessage,
   TrendSample,
   WatchValue,
@@ -141,6 +142,8 @@ export interface MonitorState {
    * history).
    */
   sessionTrend: readonly string[];
+  /** The virtual plant of the session (frontend/src/plants), as the last frame that had one sent it. */
+  plant: PlantFrame | null;
 }
 
 export const MAX_TREND_SAMPLES = 20_000;
@@ -164,6 +167,7 @@ export function initialMonitorState(): MonitorState {
     closedBy: null,
     breakpoints: {},
     sessionTrend: [],
+    plant: null,
   };
 }
 
@@ -196,6 +200,8 @@ export function mergeFrame(state: MonitorState, frame: Frame): MonitorState {
   if (frame.diagnostics && frame.diagnostics.length > 0) {
     next.diagnostics = appendCapped(state.diagnostics, frame.diagnostics, MAX_DIAGNOSTICS);
   }
+  if (frame.plant) next.plant = frame.plant;
+  else if (frame.plant_removed) next.plant = null;
   return next;
 }
 

@@ -82,9 +82,9 @@ export interface Diagnostic {
 }
 
 /** What a project file holds, by its suffix: STL, SCL, LAD/FBD, a symbol table or a watch table. */
-export type FileLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'symbols' | 'watch' | 'cpu';
+export type FileLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'symbols' | 'watch' | 'cpu' | 'plant';
 /** The language a block is written in: its file's (LAD and FBD blocks are kept as text). */
-export type BlockLanguage = Exclude<FileLanguage, 'symbols' | 'watch' | 'cpu'>;
+export type BlockLanguage = Exclude<FileLanguage, 'symbols' | 'watch' | 'cpu' | 'plant'>;
 
 /** One source file of a project (`GET /api/projects/{id}/files`). */
 export interface FileInfo {

@@ -7,7 +7,7 @@ import { loadMonaco, type MonacoApi } from './monaco/load';
 import { THEME_NAME } from './monaco/constants';
 import { bindModel, type ModelSource } from './intellisense/modelRegistry';
 
-export type SourceLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'symbols' | 'cpu';
+export type SourceLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'symbols' | 'cpu' | 'plant';
 
 /** Monaco's language of each source language: LAD and FBD share their text format, symbol
  * tables are plain CSV-like text. */
@@ -18,6 +18,7 @@ const MODEL_LANGUAGE: Record<SourceLanguage, string> = {
   fbd: 'lad',
   symbols: 'plaintext',
   cpu: 'plaintext', // cpu.properties: key = value lines, shown as a page (cpuprops/)
+  plant: 'plaintext', // <name>.plant: the project's virtual plant, YAML (plants/)
 };
 
 /** A place the editor should show (see `RevealRequest` of the tabs): a new object each time. */

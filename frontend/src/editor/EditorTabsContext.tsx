@@ -34,6 +34,9 @@ export interface SaveState {
 export interface RevealRequest {
   line: number;
   column: number;
+  /** In a LAD/FBD file: the network (1-based in its block) and the element to select there. */
+  network?: number | null;
+  element?: string | null;
   /** Grows with every request, so the same place can be asked for twice. */
   seq: number;
 }
@@ -70,6 +73,9 @@ export interface DbTab {
 
 export type EditorTab = StartTab | SourceTab | DbTab;
 
+/** A place to show: a line (and column); in a LAD/FBD file also its network and element. */
+export type RevealAt = { line: number; column?: number; network?: number | null; element?: string | null };
+
 export interface NewSource {
   name: string;
   language: SourceLanguage;
@@ -80,7 +86,7 @@ export interface NewSource {
   /** The file's version on the server, for the autosave's version check. */
   version?: number | null;
   /** A line to show once the tab is open (a block's header, a diagnostic). */
-  at?: { line: number; column?: number } | null;
+  at?: RevealAt | null;
 }
 
 interface EditorTabsValue {
@@ -108,7 +114,7 @@ interface EditorTabsValue {
   /** Replaces a tab's text with the server's (after a conflict): saved, at `version`. */
   replaceText: (id: string, text: string, version: number) => void;
   /** Brings a tab to the front and shows `line` (and `column`) in its editor. */
-  reveal: (id: string, at: { line: number; column?: number }) => void;
+  reveal: (id: string, at: RevealAt) => void;
   /** A file was renamed on the server: its tabs follow. */
   renameFileTabs: (projectId: number, from: string, to: string) => void;
   /** A file (or, without `path`, every file of a project) was deleted: its tabs close. */
@@ -154,9 +160,11 @@ export function EditorTabsProvider({ children }: { children: ReactNode }) {
   }, []);
 
   const revealSeq = useRef(0);
-  const revealAt = (at: { line: number; column?: number }): RevealRequest => ({
+  const revealAt = (at: RevealAt): RevealRequest => ({
     line: Math.max(1, at.line),
     column: Math.max(1, at.column ?? 1),
+    ...(at.network != null ? { network: at.network } : {}),
+    ...(at.element ? { element: at.element } : {}),
     seq: ++revealSeq.current,
   });
 
@@ -246,7 +254,7 @@ export function EditorTabsProvider({ children }: { children: ReactNode }) {
     );
   }, []);
 
-  const reveal = useCallback((id: string, at: { line: number; column?: number }) => {
+  const reveal = useCallback((id: string, at: RevealAt) => {
     const request = revealAt(at);
     setTabs((current) => current.map((tab) => (tab.kind === 'source' && tab.id === id ? { ...tab, reveal: request } : tab)));
     setActiveId(id);

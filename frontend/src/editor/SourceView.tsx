@@ -19,7 +19,7 @@ import { LadSourceViews, StlSourceViews, type DiagramView } from '../lad/Diagram
 import { XrefEditorActions } from '../xref/XrefEditorActions';
 import './source.css';
 
-const LANGUAGE_NAMES = { stl: 'STL', scl: 'SCL', lad: 'LAD', fbd: 'FBD', cpu: 'CPU' } as const;
+const LANGUAGE_NAMES = { stl: 'STL', scl: 'SCL', lad: 'LAD', fbd: 'FBD', cpu: 'CPU', plant: 'YAML' } as const;
 
 /** How long "no definition here" stays in the status line. */
 const NOTICE_MS = 4000;

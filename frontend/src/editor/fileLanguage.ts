@@ -10,6 +10,7 @@ export function languageOfFile(name: string): SourceLanguage | null {
   if (suffix === '.fbd') return 'fbd';
   if (['.sdf', '.asc', '.seq', '.csv'].includes(suffix)) return 'symbols';
   if (name.toLowerCase() === 'cpu.properties') return 'cpu'; // the CPU properties page
+  if (suffix === '.plant') return 'plant'; // the project's virtual plant (YAML)
   return null;
 }
 

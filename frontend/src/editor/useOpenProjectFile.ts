@@ -1,6 +1,6 @@
 import { useCallback } from 'react';
 import { getFile } from '../api/client';
-import { useEditorTabs } from './EditorTabsContext';
+import { useEditorTabs, type RevealAt } from './EditorTabsContext';
 import { isWatchTableName } from '../watchtables/format';
 import { openWatchTable } from '../watchtables/selection';
 import { languageOfFile } from './fileLanguage';
@@ -8,7 +8,7 @@ import { languageOfFile } from './fileLanguage';
 export type OpenProjectFile = (
   projectId: number,
   name: string,
-  at?: { line: number; column?: number } | null,
+  at?: RevealAt | null,
 ) => Promise<void>;
 
 /**

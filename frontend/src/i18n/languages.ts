@@ -38,6 +38,14 @@ import examplesEn from '../examples/locales/en.json';
 import examplesAr from '../examples/locales/ar.json';
 import examplesFa from '../examples/locales/fa.json';
 import examplesVi from '../examples/locales/vi.json';
+import lessonPaneEn from '../lessons/locales/en.json';
+import lessonPaneAr from '../lessons/locales/ar.json';
+import lessonPaneFa from '../lessons/locales/fa.json';
+import lessonPaneVi from '../lessons/locales/vi.json';
+import plantsEn from '../plants/locales/en.json';
+import plantsAr from '../plants/locales/ar.json';
+import plantsFa from '../plants/locales/fa.json';
+import plantsVi from '../plants/locales/vi.json';
 
 /** The interface languages, in the order the language switch lists them. */
 export const LANGUAGES = ['en', 'ar', 'fa', 'vi'] as const;
@@ -54,10 +62,10 @@ export const LANGUAGE_STORAGE_KEY = 'nasaq.lang';
  * its own top-level namespace and may add `problems.<key>` texts for the diagnostic codes it owns.
  */
 const FEATURES = {
-  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn, phrasesEn, examplesEn],
-  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr, phrasesAr, examplesAr],
-  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa, phrasesFa, examplesFa],
-  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi, phrasesVi, examplesVi],
+  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn, phrasesEn, examplesEn, lessonPaneEn, plantsEn],
+  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr, phrasesAr, examplesAr, lessonPaneAr, plantsAr],
+  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa, phrasesFa, examplesFa, lessonPaneFa, plantsFa],
+  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi, phrasesVi, examplesVi, lessonPaneVi, plantsVi],
 } as const;
 
 export type Catalogue = typeof en & { lad: typeof ladEn } & typeof cpuEn &
@@ -67,7 +75,9 @@ export type Catalogue = typeof en & { lad: typeof ladEn } & typeof cpuEn &
   typeof cpuPropsEn &
   typeof panelsEn &
   typeof phrasesEn &
-  typeof examplesEn;
+  typeof examplesEn &
+  typeof lessonPaneEn &
+  typeof plantsEn;
 
 type Tree = { [key: string]: unknown };
 

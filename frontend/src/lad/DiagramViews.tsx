@@ -250,6 +250,7 @@ export function LadSourceViews({ tab, active, monitoring, onMonitorProblem, text
               readOnly={false}
               monitoring={monitoring}
               onMonitorProblem={onMonitorProblem}
+              reveal={tab.reveal}
             />
           </DiagramOrReason>
         ) : null}

@@ -37,6 +37,8 @@ import { rungSize } from './geometry';
 import { fbdBodyHeight, fbdLayoutVersion, subscribeFbdLayouts } from './fbdGeometry';
 import { FbdView } from './FbdView';
 import { navItemsOf } from './positions';
+import { placeOfLine } from './reveal';
+import type { RevealRequest } from '../editor/EditorTabsContext';
 import * as commands from './ladCommands';
 import { LadRung, type RungProblem } from './LadRung';
 import { layoutOf } from './layoutCache';
@@ -72,6 +74,8 @@ export interface LadEditorProps {
   /** The tab's monitoring switch is on. */
   monitoring: boolean;
   onMonitorProblem: (problem: Problem | null) => void;
+  /** A place asked for (a diagnostic, a cross-reference, a lesson check): its network is selected. */
+  reveal?: RevealRequest | null;
 }
 
 interface MenuState {
@@ -85,11 +89,14 @@ function storedDisplay(): OperandDisplay {
   return DISPLAYS.includes(stored as OperandDisplay) ? (stored as OperandDisplay) : 'both';
 }
 
+/** The reveal requests already applied (each request is a new object). */
+const revealsDone = new WeakSet<RevealRequest>();
+
 function prefixOf(block: number, network: number): string {
   return `${block + 1}-${network + 1}`;
 }
 
-export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, monitoring, onMonitorProblem }: LadEditorProps) {
+export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, monitoring, onMonitorProblem, reveal = null }: LadEditorProps) {
   const { t, i18n } = useTranslation();
   const { dir, language } = useUiLanguage();
   const blocks: readonly LadBlock[] = doc.blocks ?? [];
@@ -274,6 +281,18 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
     setSelection(next);
     setMenu(null);
   }, []);
+
+  // A place asked for from outside (by line, network, element): selected once the blocks are
+  // read, once per request (a view switched back and forth does not jump there again).
+  useEffect(() => {
+    if (!reveal || revealsDone.has(reveal) || blocks.length === 0) return;
+    revealsDone.add(reveal);
+    const place = placeOfLine(text, reveal.line, reveal.network);
+    const network = blocks[place.block]?.networks[place.network];
+    if (!network) return;
+    const id = reveal.element && findById(network, reveal.element) ? reveal.element : null;
+    select({ block: place.block, network: place.network, id, point: null });
+  }, [reveal, blocks, text, select]);
 
   useEffect(() => {
     if (!wantFocus.current || editing || !active) return;

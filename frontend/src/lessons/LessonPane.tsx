@@ -1,28 +1,58 @@
-import { useId } from 'react';
+import { useCallback, useId, useState } from 'react';
 import { useTranslation } from 'react-i18next';
-import { nativeNameOf } from '../i18n/languages';
-import { ComingBadge } from '../ui/ComingBadge';
 import { BookIcon, CloseIcon } from '../ui/icons';
-import { COURSE_OUTLINE } from './courseOutline';
+import { readStored, writeStored } from '../ui/usePersistentState';
+import { CourseOutline } from './CourseOutline';
+import { LessonView } from './LessonView';
+import './lessons.css';
 
-/** The lesson pane beside the editor: today the course plan, later the lessons themselves. */
+/** Where the open lesson is remembered, so a reload comes back to it. */
+export const OPEN_LESSON_STORAGE_KEY = 'nasaq.lessonPane.lesson';
+
+/**
+ * The lesson pane beside the editor: the course outline by unit, or one lesson open with its
+ * text, its checks, hints and quiz (the lesson's project is open in the workbench).
+ *
+ * Decisions where the issue is silent:
+ * - Prerequisites are shown (marked while not passed) but do not lock a lesson: as in a course
+ *   book, a learner may read ahead; the outline says what to do first.
+ * - A lesson's text is shown in the interface language when the lesson has it, else in English,
+ *   else in its own language; one click switches between the lesson's languages.
+ * - The pane grows with the window while a lesson is open (text and diagrams need room); the
+ *   outline keeps the narrow width.
+ * - Revealed hints are kept in the browser as well, so a reload shows them again; the server
+ *   counts them in the progress.
+ * - "Check" saves the open editors first and refuses (with a note) while a save is refused or
+ *   failed, so a check never runs against text the learner does not see.
+ */
 export function LessonPane({ onClose }: { onClose: () => void }) {
   const { t } = useTranslation();
   const headingId = useId();
+  const [lessonId, setLessonIdState] = useState<string | null>(() => readStored(OPEN_LESSON_STORAGE_KEY) || null);
+
+  const setLessonId = useCallback((id: string | null) => {
+    setLessonIdState(id);
+    writeStored(OPEN_LESSON_STORAGE_KEY, id ?? '');
+  }, []);
 
   return (
-    <aside id="lesson-pane" className="lesson-pane" aria-labelledby={headingId} data-testid="lesson-pane">
+    <aside
+      id="lesson-pane"
+      className={lessonId ? 'lesson-pane lesson-pane--lesson' : 'lesson-pane'}
+      aria-labelledby={headingId}
+      data-testid="lesson-pane"
+    >
       <div className="pane-header">
         <h2 id={headingId} className="pane-header__title">
           <BookIcon />
-          <span>{t('lessons.title')}</span>
+          <span>{t('lessonPane.title')}</span>
         </h2>
         <div className="pane-header__actions">
           <button
             type="button"
             className="icon-button"
-            aria-label={t('lessons.close')}
-            title={t('lessons.close')}
+            aria-label={t('lessonPane.close')}
+            title={t('lessonPane.close')}
             data-testid="lesson-close"
             onClick={onClose}
           >
@@ -30,34 +60,13 @@ export function LessonPane({ onClose }: { onClose: () => void }) {
           </button>
         </div>
       </div>
-      {/* Focusable so keyboard users can scroll the course plan. */}
+      {/* Focusable so keyboard users can scroll the lesson. */}
       <div className="pane-body lesson-pane__body" role="region" aria-labelledby={headingId} tabIndex={0}>
-        <p className="lesson-pane__intro">
-          {t('lessons.intro')} <ComingBadge />
-        </p>
-        <h3 className="lesson-pane__subtitle">{t('lessons.overview')}</h3>
-        <ol className="course-outline">
-          {COURSE_OUTLINE.map((unit, index) => (
-            <li key={unit.id} className="course-outline__unit">
-              <span className="course-outline__number" aria-hidden="true">
-                {index + 1}
-              </span>
-              <div className="course-outline__body">
-                <strong>{t(`lessons.units.${unit.id}.title`)}</strong>
-                <p>{t(`lessons.units.${unit.id}.text`)}</p>
-                <p className="course-outline__sources">
-                  {t('lessons.sourceLanguages')}{' '}
-                  {unit.sources.map((language) => (
-                    <span key={language} className="language-chip" lang={language}>
-                      {nativeNameOf(language)}
-                    </span>
-                  ))}
-                </p>
-              </div>
-            </li>
-          ))}
-        </ol>
-        <p className="lesson-pane__note">{t('lessons.note')}</p>
+        {lessonId ? (
+          <LessonView key={lessonId} lessonId={lessonId} onBack={() => setLessonId(null)} />
+        ) : (
+          <CourseOutline onOpen={setLessonId} />
+        )}
       </div>
     </aside>
   );

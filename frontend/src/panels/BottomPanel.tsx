@@ -13,10 +13,11 @@ import { usePanelTab } from './panelTab';
 import { AssignmentPanel } from '../xref/AssignmentPanel';
 import { CrossReferencesPanel } from '../xref/CrossReferencesPanel';
 import { RenameHost } from '../xref/RenameDialog';
+import { PlantPanel } from '../plants/PlantPanel';
 
 import '../styles/monitor.css';
 
-type PanelId = 'diagnostics' | 'watch' | 'trend' | 'io' | 'debug' | 'xref' | 'assignments';
+type PanelId = 'diagnostics' | 'watch' | 'trend' | 'io' | 'plant' | 'debug' | 'xref' | 'assignments';
 
 /** The panel under the editor: diagnostics, the watch table, the trend view and the I/O panel. */
 export function BottomPanel() {
@@ -48,13 +49,14 @@ export function BottomPanel() {
     { id: 'watch', testId: 'panel-tab-watch', icon: <EyeIcon />, label: t('panels.watch'), panel: <WatchTable /> },
     { id: 'trend', testId: 'panel-tab-trend', icon: <TrendIcon />, label: t('panels.trend'), panel: <TrendView /> },
     { id: 'io', testId: 'panel-tab-io', icon: <IoIcon />, label: t('panels.io'), panel: <IoPanel /> },
+    { id: 'plant', testId: 'panel-tab-plant', icon: <IoIcon />, label: t('plants.tab'), panel: <PlantPanel /> },
     { id: 'debug', testId: 'panel-tab-debug', icon: <StepIcon />, label: t('debug.panel.tab'), panel: <DebugPanel /> },
     { id: 'xref', testId: 'panel-tab-xref', icon: <ListIcon />, label: t('xref.panel.tab'), panel: <CrossReferencesPanel /> },
     { id: 'assignments', testId: 'panel-tab-assignments', icon: <ListIcon />, label: t('xref.assignments.tab'), panel: <AssignmentPanel shown={selected === 'assignments'} /> },
   ];
 
   return (
-    <section className="bottom-panel" aria-label={t('panels.label')}>
+    <section className={selected === 'plant' ? 'bottom-panel bottom-panel--plant' : 'bottom-panel'} aria-label={t('panels.label')}>
       <Tabs tabs={tabs} selected={selected} onSelect={setSelected} label={t('panels.label')} />
       <RenameHost />
     </section>

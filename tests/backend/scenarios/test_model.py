@@ -2,7 +2,7 @@ from pathlib import Path
 
 import pytest
 
-from nasaq.scenarios.model import ScenarioError, load_scenario
+from nasaq.scenarios.model import ScenarioError, load_scenario, note_text
 
 
 def _write(tmp_path: Path, text: str) -> Path:
@@ -48,6 +48,44 @@ steps:
     ],
 )
 def test_invalid_files_name_file_and_problem(tmp_path: Path, text: str, message: str) -> None:
+    with pytest.raises(ScenarioError, match=r"case\.yaml") as error:
+        load_scenario(_write(tmp_path, text))
+    assert message in str(error.value)
+
+
+def test_a_note_is_text_or_a_text_per_language(tmp_path: Path) -> None:
+    scenario = load_scenario(
+        _write(
+            tmp_path,
+            """
+name: notes
+sources: [a.awl]
+steps:
+  - note: plain English
+  - note: {en: "overflow: network 1", fa: "سرریز در شبکهٔ 1"}
+  - note: {fa: "فقط فارسی"}
+""",
+        )
+    )
+    plain, both, persian = (step.note for step in scenario.steps)
+    assert note_text(plain, "fa") == "plain English"
+    assert note_text(both, "fa") == "سرریز در شبکهٔ 1"
+    assert note_text(both, "vi") == "overflow: network 1"  # then English
+    assert note_text(persian, "en") == "فقط فارسی"  # then any language it has
+    assert note_text(None, "fa") is None
+
+
+@pytest.mark.parametrize(
+    ("note", "message"),
+    [
+        ("{}", "note: write the text"),
+        ("{english: x}", "english: a language code"),
+        ('{en: "  "}', "en: a language code"),
+        ("{en: [a, b]}", "note"),
+    ],
+)
+def test_a_bad_note_mapping_is_refused(tmp_path: Path, note: str, message: str) -> None:
+    text = f"name: x\nsources: [a.awl]\nsteps:\n  - note: {note}\n  - run: 1\n"
     with pytest.raises(ScenarioError, match=r"case\.yaml") as error:
         load_scenario(_write(tmp_path, text))
     assert message in str(error.value)

@@ -95,3 +95,24 @@ def test_nasaq_test_prints_failures_and_the_closing_count(tmp_path: Path) -> Non
     lines = result.stdout.strip().splitlines()
     assert lines[-1] == "1 passed, 1 failed"
     assert lines[0] == f"{bad}: on-delay lamp: step 3: Q4.0 expected 1, got 0"
+
+
+def test_a_note_per_language_is_reported_in_english_by_nasaq_test(tmp_path: Path) -> None:
+    """A lesson's check may write its notes per language; ``nasaq test`` speaks English."""
+    translated = SCENARIO.replace(
+        "note: two seconds have passed",
+        'note: {fa: "دو ثانیه گذشت", en: two seconds have passed}',
+    ).replace("{Q4.0: 1, T1: {q: 1}", "{Q4.0: 0, T1: {q: 1}")
+    path = _files(tmp_path, translated)
+    result = subprocess.run(
+        [sys.executable, "-m", "nasaq", "test", str(path)],
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert result.returncode == 1
+    first = result.stdout.splitlines()[0]
+    english = "step 6 (two seconds have passed): Q4.0 expected 0, got 1"
+    assert first == f"{path}: on-delay lamp: {english}"
+    [failure] = run_scenario(path).failures
+    assert failure.describe("fa") == "step 6 (دو ثانیه گذشت): Q4.0 expected 0, got 1"

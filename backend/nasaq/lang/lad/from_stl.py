@@ -186,8 +186,28 @@ def _block(
             inner = _inner_label(items, targets)
             if inner is not None:
                 lifted = not_convertible("LAD304", inner.loc.line, inner.name)
+            elif networks and _leaves_chain_open(networks[-1]):
+                lifted = _continued_chain(items, language) or lifted
         networks.append(lifted)
     return LiftedBlock(kind=kind, name=name, title=title, networks=networks, lines=lines)
+
+
+_CHAIN_OPS = frozenset({"A", "AN", "O", "ON", "X", "XN", "A(", "AN(", "O(", "ON(", "X(", "XN("})
+
+
+def _leaves_chain_open(network: Network | NotConvertible) -> bool:
+    """A network whose logic chain ends without an assignment leaves /FC = 1: the CPU goes on
+    combining in the next network, as STEP 7 does (networks are only labels in the code)."""
+    return isinstance(network, NotConvertible) and network.code == "LAD312"
+
+
+def _continued_chain(items: Sequence[ast.CodeItem], language: str) -> NotConvertible | None:
+    """LAD309 when the network starts by combining with the previous network's open chain: a
+    rung starting at the rail would show a different program than the CPU runs."""
+    steps = to_steps(items, language)
+    if steps and steps[0].op in _CHAIN_OPS:
+        return not_convertible("LAD309", steps[0].line, steps[0].text)
+    return None
 
 
 def _networks(code: Sequence[ast.CodeItem]) -> list[tuple[int, list[ast.CodeItem]]]:

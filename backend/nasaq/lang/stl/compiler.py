@@ -35,6 +35,7 @@ SCL_SUFFIXES = (".scl",)
 LAD_SUFFIXES = (".lad", ".fbd")  # nasaq.lang.lad.text.SUFFIXES
 WATCH_TABLE_SUFFIXES = (".vat",)  # nasaq.workbench.watch_table: project files, not program
 CPU_PROPERTIES_SUFFIXES = (".properties",)  # nasaq.workbench.cpu_properties: not program
+PLANT_SUFFIXES = (".plant",)  # nasaq.plants.plant_file: the project's virtual plant, not program
 # A whole-project export of a large plant is a few MB; anything bigger is not an STL source anyone
 # wrote, and the parser (about 7 µs per token) would make the user wait for nothing.
 MAX_SOURCE_CHARS = 4 * 1024 * 1024
@@ -148,7 +149,7 @@ class _Compiler:
             suffix = _suffix(source.name)
             if suffix in SYMBOL_TABLE_SUFFIXES or suffix in WATCH_TABLE_SUFFIXES:
                 continue
-            if suffix in CPU_PROPERTIES_SUFFIXES:
+            if suffix in CPU_PROPERTIES_SUFFIXES or suffix in PLANT_SUFFIXES:
                 continue
             if suffix in SCL_SUFFIXES:
                 self.read_scl(source)

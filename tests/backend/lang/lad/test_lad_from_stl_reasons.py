@@ -118,3 +118,16 @@ def test_a_jump_from_another_network_into_a_box_label_keeps_the_network_stl() ->
     assert isinstance(first, NotConvertible)
     assert first.code == "LAD304"
     assert not isinstance(second, NotConvertible)
+
+
+def test_a_network_that_goes_on_combining_an_open_chain_stays_stl() -> None:
+    """Network 1 ends its chain without an output (/FC stays 1), so ``A M 1.4`` in network 2
+    ANDs with it on the CPU; a rung from the rail would show another program (LAD309)."""
+    code = "A(\nO I 0.0\nO M 0.1\n)\nNETWORK\nA M 1.4\n= Q 1.2\nNETWORK\nA I 0.1\n= Q 1.3\n"
+    text = "ORGANIZATION_BLOCK OB 1\nBEGIN\nNETWORK\n" + code + "END_ORGANIZATION_BLOCK\n"
+    first, second, third = lift_block(text, "chain.awl").blocks[0].networks
+    assert isinstance(first, NotConvertible)
+    assert first.code == "LAD312"
+    assert isinstance(second, NotConvertible)
+    assert (second.code, second.instruction, second.line) == ("LAD309", "A M 1.4", 9)
+    assert not isinstance(third, NotConvertible)  # network 2's assignment ended the chain
