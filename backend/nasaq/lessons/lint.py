@@ -321,7 +321,7 @@ class _Lint:
         file = f"{lesson.shown}/{name}"
         node = None
         for index, step in enumerate(scenario.steps):
-            if step.note is None or isinstance(step.note, str):  # TODO(notes): plain text
+            if step.note is None:
                 continue
             texts = {"en": step.note} if isinstance(step.note, str) else step.note
             missing = [x for x in lesson.meta.languages if not texts.get(x, "").strip()]

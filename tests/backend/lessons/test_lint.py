@@ -45,6 +45,7 @@ def test_every_rule_reports_its_file_and_code() -> None:
         ),  # a predict question without its program
         (f"{lesson}/hints.yaml", 1, "LSN308"),  # a hint names I1.7, the task does not
         ("fa8/fa8-02/hints.yaml", 2, "LSN309"),  # a hint gives a solution line away
+        ("fa8/fa8-02/checks/out.yaml", 3, "LSN304"),  # a plain-text note: English only
         ("fa8/fa8-02/checks/out.yaml", 6, "LSN304"),  # a step note without its fa text
     }
     plant = next(p for p in problems if p.code == "LSN307")
@@ -75,5 +76,6 @@ def test_a_step_note_needs_every_language_of_the_lesson() -> None:
     problems = lint_course(read_course(FIXTURES / "bad"), ["fa8-02"], reading=False)
     notes = [p for p in problems if p.file.endswith("checks/out.yaml")]
     assert [(p.line, p.params["field"], p.params["language"]) for p in notes] == [
+        (3, "step 1 note", "fa"),  # plain text counts as English only
         (6, "step 4 note", "fa"),
     ]
