@@ -368,30 +368,14 @@ export function LessonView({ lessonId, onBack }: { lessonId: string; onBack: () 
           {busy === 'check' ? t('lessonPane.check.running') : t('lessonPane.check.button')}
         </button>
         {confirming === 'reset' ? (
-          <span className="lesson-confirm" role="group" aria-label={t('lessonPane.reset.confirm')}>
-            <span>{t('lessonPane.reset.confirm')}</span>
-            <button type="button" className="button button--small button--danger" data-testid="lesson-reset-yes" onClick={() => void reset()}>
-              {t('lessonPane.reset.yes')}
-            </button>
-            <button type="button" className="button button--small" onClick={() => setConfirming(null)}>
-              {t('lessonPane.cancel')}
-            </button>
-          </span>
+          <ConfirmRow question={t('lessonPane.reset.confirm')} yes={t('lessonPane.reset.yes')} testId="lesson-reset-yes" onYes={() => void reset()} onCancel={() => setConfirming(null)} />
         ) : (
           <button type="button" className="button" disabled={!ready} data-testid="lesson-reset" onClick={() => setConfirming('reset')}>
             {t('lessonPane.reset.button')}
           </button>
         )}
         {earned ? null : confirming === 'giveUp' ? (
-          <span className="lesson-confirm" role="group" aria-label={t('lessonPane.giveUp.confirm')}>
-            <span>{t('lessonPane.giveUp.confirm')}</span>
-            <button type="button" className="button button--small button--danger" data-testid="lesson-give-up-yes" onClick={() => void surrender()}>
-              {t('lessonPane.giveUp.yes')}
-            </button>
-            <button type="button" className="button button--small" onClick={() => setConfirming(null)}>
-              {t('lessonPane.cancel')}
-            </button>
-          </span>
+          <ConfirmRow question={t('lessonPane.giveUp.confirm')} yes={t('lessonPane.giveUp.yes')} testId="lesson-give-up-yes" onYes={() => void surrender()} onCancel={() => setConfirming(null)} />
         ) : (
           <button type="button" className="button" disabled={!ready} data-testid="lesson-give-up" onClick={() => setConfirming('giveUp')}>
             {t('lessonPane.giveUp.button')}
@@ -442,5 +426,21 @@ function BackButton({ onBack }: { onBack: () => void }) {
     <button type="button" className="link-button lesson-view__back" data-testid="lesson-back" onClick={onBack}>
       {t('lessonPane.back')}
     </button>
+  );
+}
+
+/** "Are you sure?" in place of a button that throws work away (start over, give up). */
+function ConfirmRow({ question, yes, testId, onYes, onCancel }: { question: string; yes: string; testId: string; onYes: () => void; onCancel: () => void }) {
+  const { t } = useTranslation();
+  return (
+    <span className="lesson-confirm" role="group" aria-label={question}>
+      <span>{question}</span>
+      <button type="button" className="button button--small button--danger" data-testid={testId} onClick={onYes}>
+        {yes}
+      </button>
+      <button type="button" className="button button--small" onClick={onCancel}>
+        {t('lessonPane.cancel')}
+      </button>
+    </span>
   );
 }
