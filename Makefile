@@ -16,13 +16,16 @@ FRONTEND_SOURCES := $(shell find frontend/src frontend/public -type f 2>/dev/nul
 help:
 	@echo "make run    install what is missing, then serve the IDE at http://127.0.0.1:8000"
 	@echo "make test   install what is missing (incl. Chromium), then run every test suite"
+	@echo "            (two lanes: pytest | lint, types, vitest, pytest-lang; then Playwright alone)"
 	@echo "make bench        STL instructions/s of the CPU; SCL compile lines/s and statements/s;"
 	@echo "                  monitoring latency, 100 sessions, block status slowdown;"
 	@echo "                  the editor's longest main-thread task with a 500-network STL block"
 	@echo "                  and a 5,000-line SCL source, scrolled and monitored (Chromium);"
 	@echo "                  a 500-network LAD block opened, scrolled and monitored, and the"
 	@echo "                  elkjs layout of a 40-box FBD network in its worker"
-	@echo "                  a lesson's Check with a tank in closed loop over 60 s virtual"
+	@echo "                  a lesson's Check with a tank in closed loop over 60 s virtual;"
+	@echo "                  S7-Graph: a 200-step sequencer's compile time, one call of it against"
+	@echo "                  hand-written STL, and the answer time for bad .graph sources"
 	@echo "make conformance  awlsim's self-checking STL programs (downloads awlsim from PyPI)"
 	@echo "make install | make lock (re-pin Python dependencies) | make clean"
 
@@ -56,6 +59,7 @@ bench: install chromium
 	$(BIN)/python -m nasaq.monitor.bench
 	$(BIN)/python tests/bench/lesson_check.py
 	npm exec -- playwright test -c tests/e2e/bench/playwright.bench.config.ts
+	$(BIN)/python tests/bench/graph_bench.py
 
 conformance: install
 	$(BIN)/python tests/conformance/awlsim_suite.py

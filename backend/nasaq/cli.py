@@ -1,5 +1,5 @@
-"""The ``nasaq`` command: ``serve`` the IDE, ``run`` STL/SCL sources headless, ``compile`` them
-(``--emit stl`` shows what SCL becomes), ``test`` scenarios,
+"""The ``nasaq`` command: ``serve`` the IDE, ``run`` STL/SCL/LAD/FBD/S7-Graph sources headless,
+``compile`` them (``--emit stl`` shows what SCL and S7-Graph become), ``test`` scenarios,
 ``migrate`` the database, print the ``openapi`` schema."""
 
 from __future__ import annotations
@@ -110,10 +110,13 @@ def build_parser() -> argparse.ArgumentParser:
     serve.set_defaults(handler=_serve)
 
     run = commands.add_parser(
-        "run", help="run STL/SCL sources for N scans and print the final CPU state as JSON"
+        "run", help="run STL/SCL/LAD/FBD/Graph sources for N scans and print the final CPU state"
     )
     run.add_argument(
-        "sources", nargs="+", metavar="SOURCE", help=".awl/.scl/.lad/.fbd sources, symbol tables"
+        "sources",
+        nargs="+",
+        metavar="SOURCE",
+        help=".awl/.scl/.lad/.fbd/.graph sources, symbol tables",
     )
     run.add_argument("--cycles", type=int, default=1, help="scans of OB1 to run (after OB100)")
     run.add_argument(
@@ -156,23 +159,31 @@ def build_parser() -> argparse.ArgumentParser:
     run.set_defaults(handler=_run)
 
     compile_ = commands.add_parser(
-        "compile", help="compile STL/SCL sources: print problems (and, with --emit stl, the STL)"
+        "compile", help="compile sources: print problems (and, with --emit stl, the STL)"
     )
-    compile_.add_argument("sources", nargs="+", metavar="SOURCE", help=".awl/.scl sources")
+    compile_.add_argument(
+        "sources", nargs="+", metavar="SOURCE", help=".awl/.scl/.lad/.fbd/.graph sources"
+    )
     compile_.add_argument(
         "--emit",
         choices=["stl", "none"],
         default="none",
-        help="stl: print the STL the SCL blocks are compiled to, with their SCL lines",
+        help="stl: print the STL the SCL and S7-Graph blocks are compiled to, with their lines",
     )
     compile_.set_defaults(handler=_compile)
 
     convert = commands.add_parser(
         "convert",
-        help="convert a source between STL, LAD and FBD (networks without LAD shape stay STL)",
+        help="convert a source between STL, LAD and FBD (networks without LAD shape stay STL), "
+        "or an S7-Graph source to its STL",
     )
-    convert.add_argument("source", metavar="SOURCE", help=".awl/.stl, .lad or .fbd source")
-    convert.add_argument("--to", required=True, choices=["stl", "lad", "fbd"])
+    convert.add_argument("source", metavar="SOURCE", help=".awl/.stl, .lad, .fbd or .graph source")
+    convert.add_argument(
+        "--to",
+        required=True,
+        choices=["stl", "lad", "fbd", "graph"],
+        help="graph: nothing converts to S7-Graph (the error says so)",
+    )
     convert.add_argument("--out", metavar="FILE", help="write here instead of standard output")
     convert.set_defaults(handler=_convert)
 

@@ -37,9 +37,14 @@ def dist(tmp_path: Path) -> Path:
 
 @pytest.fixture
 def settings(tmp_path: Path, dist: Path) -> Settings:
-    # No example projects: a test starts from an empty database unless it asks for them.
+    # No example projects: a test starts from an empty database unless it asks for them. One
+    # simulation worker, not one per core: each app a test makes starts its workers, and a
+    # worker's start (a Python process importing the CPU and the compilers) costs a second.
     return Settings(
-        data_dir=tmp_path / "data", frontend_dist=dist, examples_dir=tmp_path / "no-examples"
+        data_dir=tmp_path / "data",
+        frontend_dist=dist,
+        examples_dir=tmp_path / "no-examples",
+        session_workers=1,
     )
 
 

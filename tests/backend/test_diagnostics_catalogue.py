@@ -43,7 +43,7 @@ FRONTEND = Path(__file__).resolve().parents[2] / "frontend" / "src"
 def _problems(language: str) -> dict[str, str]:
     """``problems.*`` of the main catalogue and of every feature's own (``<feature>/locales``)."""
     found: dict[str, str] = {}
-    for path in sorted(FRONTEND.glob(f"*/locales/{language}.json")):
+    for path in sorted(FRONTEND.glob(f"*/locales*/{language}.json")):  # graph/locales-syntax too
         found.update(json.loads(path.read_text("utf-8")).get("problems", {}))
     return found
 

@@ -58,9 +58,9 @@ describe('project files API types match the OpenAPI document', () => {
   });
 
   it('the enums are the backend’s', () => {
-    const languages: Record<FileInfo['language'], true> = { stl: true, scl: true, lad: true, fbd: true, symbols: true, watch: true, cpu: true, plant: true };
+    const languages: Record<FileInfo['language'], true> = { stl: true, scl: true, lad: true, fbd: true, graph: true, symbols: true, watch: true, cpu: true, plant: true };
     expect(keys(languages)).toEqual([...(schemas.FileInfo!.properties!.language!.enum ?? [])].sort());
-    const blockLanguages: Record<TreeBlock['language'], true> = { stl: true, scl: true, lad: true, fbd: true };
+    const blockLanguages: Record<TreeBlock['language'], true> = { stl: true, scl: true, lad: true, fbd: true, graph: true };
     expect(keys(blockLanguages)).toEqual([...(schemas.TreeBlock!.properties!.language!.enum ?? [])].sort());
     const kinds: Record<TreeBlock['kind'], true> = { OB: true, FB: true, FC: true, DB: true, UDT: true };
     expect(keys(kinds)).toEqual([...(schemas.TreeBlock!.properties!.kind!.enum ?? [])].sort());

@@ -227,6 +227,7 @@ const stlStatus = (lines: number[], scan = 5): BlockStatus => ({
   block: 'OB1',
   language: 'stl',
   elements: [],
+  graph: null,
   scan,
   instructions: lines.map((line, index) => ({
     index,
@@ -306,7 +307,7 @@ describe('monitoring the block at the caret', () => {
     const inline = () => editor.decorations().filter((d) => d.options.after !== undefined);
     act(() =>
       socket().receive(
-        frame({ seq: 2, block: { block: 'FC10', language: 'scl', elements: [], scan: 3, instructions: [], lines: [{ line: 6, values: { Raw: 13824, Scale: 50 } }] } }),
+        frame({ seq: 2, block: { block: 'FC10', language: 'scl', elements: [], graph: null, scan: 3, instructions: [], lines: [{ line: 6, values: { Raw: 13824, Scale: 50 } }] } }),
       ),
     );
     await waitFor(() => expect(inline()).toHaveLength(1));
@@ -318,7 +319,7 @@ describe('monitoring the block at the caret', () => {
     act(() => {
       for (let k = 0; k < 10; k += 1) {
         socket().receive(
-          frame({ seq: 10 + k, block: { block: 'FC10', language: 'scl', elements: [], scan: 4 + k, instructions: [], lines: [{ line: 6, values: { Raw: k } }] } }),
+          frame({ seq: 10 + k, block: { block: 'FC10', language: 'scl', elements: [], graph: null, scan: 4 + k, instructions: [], lines: [{ line: 6, values: { Raw: k } }] } }),
         );
       }
     });
@@ -326,7 +327,7 @@ describe('monitoring the block at the caret', () => {
     await waitFor(() => expect((inline()[0]!.options.after as { content: string }).content).toBe('\u2003Raw = 9'));
     expect(collection.sets).toBe(before + 1);
     // A frame of another block is not shown.
-    act(() => socket().receive(frame({ seq: 3, block: { block: 'OB1', language: 'stl', elements: [], scan: 4, instructions: [], lines: [] } })));
+    act(() => socket().receive(frame({ seq: 3, block: { block: 'OB1', language: 'stl', elements: [], graph: null, scan: 4, instructions: [], lines: [] } })));
     await waitFor(() => expect(inline()).toHaveLength(0));
     await user.click(screen.getByTestId('monitor-toggle'));
     expect(inline()).toHaveLength(0);

@@ -139,7 +139,7 @@ const instruction = (index: number, line: number | null, values: Partial<Instruc
   ...values,
 });
 
-const stl = (instructions: InstructionStatus[]): BlockStatus => ({ block: 'OB1', language: 'stl', elements: [], scan: 7, instructions, lines: [] });
+const stl = (instructions: InstructionStatus[]): BlockStatus => ({ block: 'OB1', language: 'stl', elements: [], graph: null, scan: 7, instructions, lines: [] });
 
 describe('the STL status rows', () => {
   it('formats ACCU values signed in decimal or as STEP 7 hexadecimal, the status word as 9 bits', () => {
@@ -227,6 +227,7 @@ describe('the SCL inline values', () => {
       block: 'FC10',
       language: 'scl',
       elements: [],
+      graph: null,
       scan: 3,
       instructions: [],
       lines: [

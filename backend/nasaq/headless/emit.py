@@ -1,5 +1,7 @@
 """``nasaq compile``: compile sources and print what they became, as teachers show it: the STL
-that S7-SCL blocks are compiled to, each SCL line marked where its code starts."""
+that S7-SCL blocks are compiled to, each SCL line marked where its code starts, and the STL an
+S7-Graph FB lowers to (its sequencer machinery, steps, actions and transitions), each part
+marked with the Graph line it comes from. The Graph files come first, in the order given."""
 
 from __future__ import annotations
 
@@ -11,6 +13,38 @@ from nasaq.diagnostics import Severity
 from nasaq.headless.sources import SourceError, compile_files, diagnostic_line
 from nasaq.lang.stl import ast
 from nasaq.lang.stl.format import format_block
+from nasaq.workbench.names import GRAPH_SUFFIXES
+
+
+def _source_lines(path: Path) -> list[str]:
+    try:
+        return path.read_text(encoding="utf-8", errors="replace").split("\n")
+    except OSError:
+        return []
+
+
+def graph_stl(file: str, source: list[str]) -> str:
+    """The STL of a ``.graph`` file's FBs, a ``// 12: STEP Fill (2)`` comment line before the
+    code of each Graph line (the lowering keeps each generated line's Graph line)."""
+    from nasaq.lang.graph.compile import lower_file  # only Graph sources need it
+
+    lowered = lower_file(file, "\n".join(source))
+    out: list[str] = []
+    last = 0
+    in_code = False
+    for number, text in enumerate(lowered.stl.rstrip("\n").split("\n"), start=1):
+        head = text.strip().upper()
+        if head == "BEGIN":
+            in_code = True
+        elif head.startswith("END_"):
+            in_code = False
+        line, _network = lowered.place(number)
+        if in_code and head not in ("BEGIN", "") and line != last:
+            last = line
+            shown = source[line - 1].strip() if 0 < line <= len(source) else ""
+            out.append(f"// {line}: {shown}" if shown else f"// {line}")
+        out.append(text)
+    return "\n".join(out) + "\n\n"
 
 
 def line_marks(lines: dict[str, list[str]], file: str) -> object:
@@ -29,7 +63,9 @@ def line_marks(lines: dict[str, list[str]], file: str) -> object:
     return comment
 
 
-def main(paths: list[Path], emit: str, out: TextIO = sys.stdout, err: TextIO = sys.stderr) -> int:
+def main(paths: list[Path], emit: str, out: TextIO | None = None, err: TextIO | None = None) -> int:
+    out = sys.stdout if out is None else out  # looked up now: a test may replace them
+    err = sys.stderr if err is None else err
     try:
         result = compile_files(paths)
     except SourceError as exc:
@@ -41,12 +77,10 @@ def main(paths: list[Path], emit: str, out: TextIO = sys.stdout, err: TextIO = s
         lines: dict[str, list[str]] = {}
         for file, _block in result.generated:
             if file not in lines:
-                try:
-                    lines[file] = (
-                        Path(file).read_text(encoding="utf-8", errors="replace").split("\n")
-                    )
-                except OSError:
-                    lines[file] = []
+                lines[file] = _source_lines(Path(file))
+        graphs = [path for path in paths if path.suffix.lower() in GRAPH_SUFFIXES]
+        for path in graphs:
+            out.write(graph_stl(str(path), _source_lines(path)))
         for file, block in result.generated:
             out.write(format_block(block, comment=line_marks(lines, file)))  # type: ignore[arg-type]
             out.write("\n")

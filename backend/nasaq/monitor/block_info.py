@@ -36,7 +36,7 @@ class Slot:
 class BlockInfo:
     block: Block
     name: str
-    language: str  # "stl", "scl", "lad" or "fbd": the language of the block's source
+    language: str  # "stl", "scl", "lad", "fbd" or "graph": the language of the block's source
     file: str | None
     lines: list[int | None]
     networks: list[int]
@@ -101,7 +101,7 @@ def block_info(block: Block) -> BlockInfo:
     starts = [k == 0 or lines[k] != lines[k - 1] or k in targets for k in range(len(code))]
     file = sorted(files)[0] if files else None
     suffix = file.lower().rsplit(".", 1)[-1] if file is not None and "." in file else ""
-    language = suffix if suffix in ("scl", "lad", "fbd") else "stl"
+    language = suffix if suffix in ("scl", "lad", "fbd", "graph") else "stl"
     info = BlockInfo(block, block_name(block), language, file, lines, networks, starts)
     info.slots = [
         slot for slot in _slots(block) if not (language == "scl" and _HIDDEN.match(slot.name))

@@ -72,4 +72,6 @@ def command(session: Session, client: int, message: Any) -> Callable[[], Any]:
             return lambda: s.do_plant_fault(fault, on)
         case p.PlantReset():
             return s.do_plant_reset
+        case p.GraphControl(db=db, op=op, step=step):
+            return lambda: s.do_graph_control(db, op, step)
     raise AssertionError(f"unhandled message {message!r}")

@@ -90,8 +90,14 @@ class WorkerPool:
         ).start()
 
     def stop(self) -> None:
+        """Closes every session, then ends the workers. A worker without a session has nothing
+        to close: it is terminated at once rather than waited for (one still starting would
+        first finish its imports, a second or more of CPU for nothing)."""
         workers, self._workers = self._workers, []
         for worker in workers:
+            if not worker.sessions:
+                worker.process.terminate()
+                continue
             with contextlib.suppress(OSError):
                 worker.send(("shutdown",))
         for worker in workers:

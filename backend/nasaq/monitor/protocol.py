@@ -18,6 +18,22 @@ Value = bool | int | float | str | None
 TimeModeName = Literal["virtual", "real", "fast", "pause"]
 CpuMode = Literal["RUN", "STOP", "HOLD"]
 StepKind = Literal["instruction", "statement", "network", "scan"]
+GraphOp = Literal[
+    "auto",
+    "man",
+    "tap",
+    "top",
+    "ack",
+    "step_on",
+    "step_off",
+    "push",
+    "init",
+    "off",
+    "interlock_on",
+    "interlock_off",
+    "supervision_on",
+    "supervision_off",
+]
 
 
 class _Message(BaseModel):
@@ -194,6 +210,20 @@ class PlantFault(_Message):
     on: bool = True
 
 
+class GraphControl(_Message):
+    """S7-Graph's Control Sequencer (Debug > Control Sequencer) on the instance DB ``db`` of a
+    Graph FB (``DB1`` or its symbol): select a mode (``auto``, ``man``, ``tap``, ``top``),
+    acknowledge a supervision error (``ack``), switch step ``step`` on or off in MAN
+    (``step_on``, ``step_off``), ``push`` (T_PUSH once), ``init`` or ``off`` the sequencer for
+    one call, switch its interlock or supervision check on or off. The FB acts at its next call
+    (the instance DB's mailbox, ``nasaq/lang/graph/SEMANTICS.md`` §4)."""
+
+    type: Literal["graph_control"]
+    db: str = Field(min_length=1, max_length=64)
+    op: GraphOp
+    step: int | None = Field(default=None, ge=1, le=65535)
+
+
 class PlantReset(_Message):
     """Puts the plant back in its initial state: its raised faults cleared, the faults the
     plant file injects from the start injected again."""
@@ -222,7 +252,8 @@ ClientMessage = Annotated[
     | RunScans
     | PlantOperate
     | PlantFault
-    | PlantReset,
+    | PlantReset
+    | GraphControl,
     Field(discriminator="type"),
 ]
 CLIENT_MESSAGE: TypeAdapter[ClientMessage] = TypeAdapter(ClientMessage)
@@ -333,16 +364,52 @@ class ElementStatus(BaseModel):
     pins: dict[str, Value] = Field(default_factory=dict)
 
 
+class GraphStepStatus(BaseModel):
+    """A step of an S7-Graph FB as the chart draws it online: ``disturbed`` is an active step
+    with an interlock error (``interlock_error``, LA) or a supervision error not yet
+    acknowledged (``supervision_error``, VA). ``t_ms``/``u_ms``: its time active (current or
+    last activation), and the same without the time spent disturbed."""
+
+    number: int
+    name: str
+    state: Literal["inactive", "active", "disturbed"]
+    t_ms: int
+    u_ms: int
+    interlock_error: bool
+    supervision_error: bool
+
+
+class GraphTransitionStatus(BaseModel):
+    """A transition: ``tt``, its condition was evaluated true in the FB's last call."""
+
+    number: int
+    name: str
+    tt: bool
+
+
+class GraphStatus(BaseModel):
+    """The sequencer state of an S7-Graph FB, read from the instance DB its sampled call used
+    (``db``) at the end of that scan: the operating mode and every step and transition."""
+
+    db: str = Field(description="The instance read, 'DB1'; a multi-instance: 'DB1' and 'at'")
+    at: int = Field(default=0, description="Byte offset of the instance in db (multi-instance)")
+    mode: Literal["AUTO", "MAN", "TAP", "TOP"] | None
+    steps: list[GraphStepStatus]
+    transitions: list[GraphTransitionStatus]
+
+
 class BlockStatus(BaseModel):
     """One sampled execution of the open block: rows for the instructions that ran, and for a
-    LAD/FBD block the status of each element that ran (an element absent did not run)."""
+    LAD/FBD block the status of each element that ran (an element absent did not run); for an
+    S7-Graph FB, ``graph`` (null for every other block, and for a Graph FB that did not run)."""
 
     block: str
-    language: Literal["stl", "scl", "lad", "fbd"]
+    language: Literal["stl", "scl", "lad", "fbd", "graph"]
     scan: int
     instructions: list[InstructionStatus]
     lines: list[LineStatus]
     elements: list[ElementStatus] = Field(default_factory=list)
+    graph: GraphStatus | None = None
 
 
 class PlantFrame(BaseModel):

@@ -61,6 +61,7 @@ from nasaq.monitor.download import carry_over, compile_download
 from nasaq.monitor.element_status import ElementStatusBuilder
 from nasaq.monitor.errors import MonitorError
 from nasaq.monitor.frames import FrameState
+from nasaq.monitor.graph_sequencer import Controller, graph_layout, status_of_call
 from nasaq.monitor.lad_blocks import lad_blocks
 from nasaq.monitor.plant_link import PlantLink, no_plant, plant_of
 from nasaq.monitor.protocol import (
@@ -68,6 +69,7 @@ from nasaq.monitor.protocol import (
     CpuState,
     CycleStats,
     ForcedValue,
+    GraphOp,
     HoldState,
     Location,
     PlantFrame,
@@ -78,7 +80,7 @@ from nasaq.monitor.protocol import (
     WatchValue,
 )
 from nasaq.monitor.scheduler import Scheduler
-from nasaq.monitor.status import Recorder
+from nasaq.monitor.status import AR2, DI, Recorder
 from nasaq.workbench.cpu_properties import CpuProperties, find, properties_of
 
 log = logging.getLogger(__name__)
@@ -149,6 +151,7 @@ class Session:
         self._resume_mode: TimeModeName = "virtual" if time_mode == "pause" else time_mode
         self.cpu_share = cpu_share
         self.debugger = Debugger(self)
+        self.sequencers = Controller()  # S7-Graph's Control Sequencer (graph_sequencer.py)
         self.clients: dict[int, ClientView] = {}
         self.kept_trend: ClientView | None = None  # the trend of a client that left
         self.breakpoint_places: dict[int, dict[str, Any]] = {}  # id: where a client set it
@@ -470,6 +473,7 @@ class Session:
         self._block_status.clear()
         self._debug_keys = frozenset()
         self.debugger = Debugger(self)
+        self.sequencers.clear()
         self.last_activity = time.monotonic()
         self.breakpoint_places.clear()
         self.kept_trend = None
@@ -489,6 +493,13 @@ class Session:
         if self.plant is None:
             raise no_plant()
         self.plant.reset(self.cpu)
+
+    def do_graph_control(self, db: str, op: GraphOp, step: int | None) -> dict[str, object]:
+        """A Control Sequencer command to a Graph FB's instance DB, carried out at its next
+        call (``nasaq.monitor.graph_sequencer``)."""
+        running = self.cpu.mode == "RUN"
+        dbs = self.engine.memory.dbs
+        return self.sequencers.command(self.program, dbs, running, db, op, step)
 
     def view(self, client: int) -> ClientView:
         found = self.clients.get(client)
@@ -619,6 +630,10 @@ class Session:
             found = self._recorders[key] = Recorder(
                 info, engine.memory, engine.timers, engine.counters, elements
             )
+            layout = graph_layout(info.block)
+            if layout is not None:  # an S7-Graph FB: its steps and transitions too
+                dbs = engine.memory.dbs
+                found.graph = lambda regs: status_of_call(layout, regs[DI], regs[AR2], dbs)
         return found
 
     def _hooks(self, compiled: Compiled) -> tuple[Callable[..., None], Callable[..., None]]:
@@ -794,6 +809,8 @@ class Session:
         plant = self.plant
         if plant is not None:
             plant.before_scan(cpu)
+        if self.sequencers.boxes:
+            self.sequencers.before_scan(engine.memory.dbs)
         started = time.perf_counter()
         cpu.scan()
         elapsed = time.perf_counter() - started - self._held_time

@@ -16,7 +16,13 @@ from nasaq.cpu.memory import Memory
 from nasaq.cpu.timers import Timers
 from nasaq.ir import Area, CounterRef, Direct, ParamRef, RegisterIndirect, TimerRef
 from nasaq.monitor.block_info import BlockInfo, Slot, read_slot
-from nasaq.monitor.protocol import BlockStatus, InstructionStatus, LineStatus, Value
+from nasaq.monitor.protocol import (
+    BlockStatus,
+    GraphStatus,
+    InstructionStatus,
+    LineStatus,
+    Value,
+)
 
 # Positions in the register tuple the hooks pass (codegen.compiler.HOOK_REGISTERS).
 A1, A2, FC, RLO, STA, ORB, OS, OV, CC0, CC1, BR, AR1, AR2, DB, DI = range(15)
@@ -77,6 +83,8 @@ class Recorder:
         if elements is not None:
             elements.attach(self)
         self.last: BlockStatus | None = None
+        # An S7-Graph FB: its sequencer's state from the registers of its entry (the instance).
+        self.graph: Callable[[tuple[Any, ...]], GraphStatus | None] | None = None
 
     def select(self, networks: frozenset[int] | None) -> None:
         """Records only the instructions of ``networks`` (None: all), from the next sample."""
@@ -121,6 +129,7 @@ class Recorder:
         self.active[:] = self._off
         if not self.rows:
             return self.last  # the block did not run in this scan
+        entry = self.rows.get(0)  # the last call's first instruction: its instance
         if self.entry_only:
             self.rows.pop(0, None)
         info = self.info
@@ -153,6 +162,7 @@ class Recorder:
             instructions=instructions,
             lines=[LineStatus(line=k, values=v) for k, v in sorted(lines.items())],
             elements=[] if elements is None else elements.status(self.rows, self.extra),
+            graph=None if self.graph is None or entry is None else self.graph(entry[0]),
         )
         return self.last
 
@@ -179,14 +189,16 @@ class Recorder:
             instructions=[] if last is None else last.instructions,
             lines=[LineStatus(line=k, values=v) for k, v in sorted(lines.items())],
             elements=[] if last is None else last.elements,
+            graph=None if last is None else last.graph,
         )
 
 
-_LANGUAGES: dict[str, Literal["stl", "scl", "lad", "fbd"]] = {
+_LANGUAGES: dict[str, Literal["stl", "scl", "lad", "fbd", "graph"]] = {
     "stl": "stl",
     "scl": "scl",
     "lad": "lad",
     "fbd": "fbd",
+    "graph": "graph",
 }
 
 

@@ -24,6 +24,7 @@ from nasaq.headless.addresses import (
 )
 from nasaq.ir import Direct, Width
 from nasaq.plants.runtime import PlantRuntime
+from nasaq.scenarios.members import is_member_key
 from nasaq.scenarios.model import PLANT_KEY, ScenarioError
 
 Mismatch = tuple[str, str] | None  # (expected, actual) as text, None when it holds
@@ -142,9 +143,21 @@ def _plant(runtime: PlantRuntime | None, key: str, expected: Any) -> Check:
     return equal
 
 
-def prepare(cpu: Cpu, runtime: PlantRuntime | None, key: str, expected: Any) -> Check:
+MemberCheck = Callable[[str, Any], Check]
+"""Builds the check of a DB variable by name (``nasaq.scenarios.members``)."""
+
+
+def prepare(
+    cpu: Cpu,
+    runtime: PlantRuntime | None,
+    key: str,
+    expected: Any,
+    member: MemberCheck | None = None,
+) -> Check:
     """The check of one ``expect`` entry; raises ScenarioError for an entry that cannot be
-    checked (a real on a word, a state the plant does not have)."""
+    checked (a real on a word, a state the plant does not have, an unknown DB variable)."""
+    if member is not None and is_member_key(key):
+        return member(key, expected)
     if key == "mode":
         wanted = str(expected).upper()
         return lambda: None if cpu.mode == wanted else (wanted, cpu.mode)
@@ -157,6 +170,8 @@ def prepare(cpu: Cpu, runtime: PlantRuntime | None, key: str, expected: Any) -> 
 
 
 def prepare_all(
-    cpu: Cpu, runtime: PlantRuntime | None, table: dict[str, Any]
+    cpu: Cpu, runtime: PlantRuntime | None, table: dict[str, Any], member: MemberCheck | None = None
 ) -> list[tuple[str, Check]]:
-    return [(str(key), prepare(cpu, runtime, str(key), value)) for key, value in table.items()]
+    return [
+        (str(key), prepare(cpu, runtime, str(key), value, member)) for key, value in table.items()
+    ]

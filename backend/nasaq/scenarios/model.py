@@ -41,9 +41,17 @@ def _check_expect_keys(table: dict[str, Any]) -> None:
             if len(text) == len(PLANT_KEY):
                 raise ValueError("plant.: name a state of the plant, or plant.faults")
             continue
-        try:
-            parse_address(text)
-        except AddressError as exc:
+        _check_address(text)
+
+
+def _check_address(text: str) -> None:
+    """An address, or a DB variable (``DB1.S5.X``) resolved once the program is compiled."""
+    from nasaq.scenarios.members import is_member_key  # members.py reads ScenarioError
+
+    try:
+        parse_address(text)
+    except AddressError as exc:
+        if not is_member_key(text):
             raise ValueError(str(exc)) from None
 
 
@@ -115,10 +123,7 @@ class Step(BaseModel):
                     raise ValueError(f"note: {language}: a language code (en, fa ...) and a text")
         for key in self.set_ or {}:
             if key != "mode":
-                try:
-                    parse_address(str(key))
-                except AddressError as exc:
-                    raise ValueError(str(exc)) from None
+                _check_address(str(key))
         _check_expect_keys(self.expect or {})
         for control, value in (self.operate or {}).items():
             if isinstance(value, str):

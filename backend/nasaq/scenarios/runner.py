@@ -32,7 +32,7 @@ from nasaq.workbench.names import language_of
 
 __all__ = ["Failure", "ScenarioResult", "run_loaded", "run_scenario"]
 
-_COMPILED = frozenset({"stl", "scl", "lad", "fbd", "symbols"})
+_COMPILED = frozenset({"stl", "scl", "lad", "fbd", "graph", "symbols"})
 
 
 def _project_files(sources: Sequence[tuple[str, str]]) -> list[SourceFile]:

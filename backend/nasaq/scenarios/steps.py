@@ -18,6 +18,7 @@ from nasaq.headless.addresses import encode_value, parse_address, parse_number
 from nasaq.ir import Area, Direct, Program
 from nasaq.plants.runtime import PlantRuntime
 from nasaq.scenarios.expectations import Check, prepare_all
+from nasaq.scenarios.members import Members, is_member_key
 from nasaq.scenarios.model import PLANT_KEY, Interval, Note, Scenario, ScenarioError, Step
 from nasaq.scenarios.result import Failure, ScenarioResult
 from nasaq.scenarios.where import Writers
@@ -38,6 +39,7 @@ class Execution:
         self.scenario = scenario
         self.result = result
         self.writers = Writers(program, texts)
+        self.members = Members(program)
         self.cycle_ms = scenario.cycle_ms
         self.scans_run = 0
         self.stopped_at: int | None = None  # virtual time the CPU left RUN by an error
@@ -120,11 +122,15 @@ class Execution:
         cpu, runtime = self.cpu, self.runtime
         if step.set_ is not None:
             for key, value in step.set_.items():
-                _set(cpu, str(key), value)
+                if is_member_key(str(key)):
+                    self.members.write(cpu, str(key), value, self.index)
+                else:
+                    _set(cpu, str(key), value)
         elif step.run is not None:
             self.scans(step.scans(self.cycle_ms))
         elif step.expect is not None:
-            for key, expected, actual in self._failing(prepare_all(cpu, runtime, step.expect)):
+            checks = prepare_all(cpu, runtime, step.expect, self.member_check)
+            for key, expected, actual in self._failing(checks):
                 self.fail(key, expected, actual)
         elif step.operate is not None:
             plant = self._plant("operate")
@@ -143,13 +149,16 @@ class Execution:
             cpu.stop()
             cpu.start(cold=step.restart == "cold")
 
+    def member_check(self, key: str, expected: Any) -> Check:
+        return self.members.check(self.cpu, key, expected, self.index)
+
     def _plant(self, what: str) -> PlantRuntime:
         if self.runtime is None:
             raise ScenarioError(f"step {self.index}: {what}: this scenario runs no plant")
         return self.runtime
 
     def _during(self, interval: Interval) -> None:
-        checks = prepare_all(self.cpu, self.runtime, interval.expect)
+        checks = prepare_all(self.cpu, self.runtime, interval.expect, self.member_check)
         count = self._count(interval.ms)
         start = self.scans_run
         failing = self.scans(count, checks)
@@ -159,7 +168,7 @@ class Execution:
             self.scans(count - (self.scans_run - start))  # time goes on; the step has failed
 
     def _within(self, interval: Interval) -> None:
-        checks = prepare_all(self.cpu, self.runtime, interval.expect)
+        checks = prepare_all(self.cpu, self.runtime, interval.expect, self.member_check)
         failing = self._failing(checks)
         if failing:
             after = self.scans(self._count(interval.ms), checks, until=True)

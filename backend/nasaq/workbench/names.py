@@ -1,7 +1,8 @@
 """Which names a project file may have, and what language a name means.
 
 A name is what the compiler reads by its suffix (``.awl``/``.stl`` STL, ``.scl`` SCL, ``.lad``
-LAD and ``.fbd`` FBD in their text format, ``.sdf``, ``.asc``, ``.seq``, ``.csv`` symbol tables;
+LAD and ``.fbd`` FBD in their text format, ``.graph`` S7-Graph, ``.sdf``, ``.asc``, ``.seq``,
+``.csv`` symbol tables;
 ``.vat`` watch tables, ``cpu.properties`` and ``.plant`` plant files are project files the
 compiler skips)
 and also a plain file in an export, so it avoids what
@@ -24,21 +25,24 @@ from nasaq.lang.stl.compiler import (
 )
 from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES
 
-BlockLanguage = Literal["stl", "scl", "lad", "fbd"]
-Language = Literal["stl", "scl", "lad", "fbd", "symbols", "watch", "cpu", "plant"]
+BlockLanguage = Literal["stl", "scl", "lad", "fbd", "graph"]
+Language = Literal["stl", "scl", "lad", "fbd", "graph", "symbols", "watch", "cpu", "plant"]
+GRAPH_SUFFIXES = (".graph",)  # nasaq.lang.graph.text.SUFFIXES: an S7-Graph FB, compiled to STL
 
 MAX_NAME_CHARS = 128
 MAX_TEXT_CHARS = MAX_SOURCE_CHARS  # the compiler refuses larger sources (STL111)
 MAX_FILES = 500  # what one download into a simulated CPU accepts
-SOURCE_SUFFIXES = STL_SUFFIXES + SCL_SUFFIXES + LAD_SUFFIXES + SYMBOL_TABLE_SUFFIXES
+SOURCE_SUFFIXES = (
+    STL_SUFFIXES + SCL_SUFFIXES + LAD_SUFFIXES + GRAPH_SUFFIXES + SYMBOL_TABLE_SUFFIXES
+)
 
 _FORBIDDEN = re.compile(r'[\x00-\x1f\x7f/\\:*?"<>|]')
 _DEVICES = re.compile(r"(CON|PRN|AUX|NUL|COM\d|LPT\d)", re.IGNORECASE)
 
 
 def language_of(name: str) -> Language | None:
-    """``stl``, ``scl``, ``lad``, ``fbd`` or ``symbols`` by the suffix, as the compiler
-    decides; else None."""
+    """``stl``, ``scl``, ``lad``, ``fbd``, ``graph`` or ``symbols`` by the suffix, as the
+    compiler decides; else None."""
     suffix = name[name.rfind(".") :].lower() if "." in name else ""
     if suffix in STL_SUFFIXES:
         return "stl"
@@ -46,6 +50,8 @@ def language_of(name: str) -> Language | None:
         return "scl"
     if suffix in LAD_SUFFIXES:
         return "lad" if suffix == ".lad" else "fbd"
+    if suffix in GRAPH_SUFFIXES:
+        return "graph"
     if suffix in SYMBOL_TABLE_SUFFIXES:
         return "symbols"
     if suffix in WATCH_TABLE_SUFFIXES:

@@ -22,8 +22,9 @@ from pydantic import BaseModel, Field
 from nasaq.ir import Program
 from nasaq.lang.stl import SourceFile, compile_sources
 from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES, SymbolTable, read_symbol_table
+from nasaq.workbench.graph_outline import OutlineSequencer, graph_charts
 from nasaq.workbench.members import Member, block_members
-from nasaq.workbench.names import BlockLanguage
+from nasaq.workbench.names import BlockLanguage, language_of
 from nasaq.workbench.tree import KindName, user_blocks
 
 _COMMENT = re.compile(r"//(.*)$")
@@ -54,6 +55,10 @@ class OutlineBlock(BaseModel):
         description="The interface of a code block; the data of a DB (an instance DB's are "
         "its FB's)"
     )
+    sequencers: list[OutlineSequencer] | None = Field(
+        default=None,
+        description="An S7-Graph FB: its sequencers, steps and transitions with their lines",
+    )
 
 
 class ProjectOutline(BaseModel):
@@ -72,6 +77,11 @@ def _with_comment(member: Member, lines: dict[str, list[str]]) -> Member:
 
 def _blocks(program: Program, texts: dict[str, str]) -> list[OutlineBlock]:
     lines = {name: text.splitlines() for name, text in texts.items()}
+    charts = {
+        name: graph_charts(name, text)
+        for name, text in texts.items()
+        if language_of(name) == "graph"
+    }
     return [
         OutlineBlock(
             kind=entry.kind,
@@ -87,9 +97,24 @@ def _blocks(program: Program, texts: dict[str, str]) -> list[OutlineBlock]:
                 for member in block_members(block, program, texts)
                 if member.line or _GENERATED.fullmatch(member.name) is None
             ],
+            sequencers=_chart(charts, entry.file, entry.kind, entry.number, entry.name),
         )
         for block, entry in user_blocks(program.blocks.values(), texts)
     ]
+
+
+def _chart(
+    charts: dict[str, dict[str, list[OutlineSequencer]]],
+    file: str,
+    kind: str,
+    number: int,
+    name: str,
+) -> list[OutlineSequencer] | None:
+    found = charts.get(file)
+    if found is None or kind != "FB":
+        return None
+    by_number = found.get(f"FB{number}")
+    return by_number if by_number is not None else found.get(name.casefold())
 
 
 def _symbols(sources: list[tuple[str, str]]) -> list[OutlineSymbol]:

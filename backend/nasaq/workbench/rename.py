@@ -1,5 +1,5 @@
 """Rename a symbol, a block or a DB member everywhere in a project, as TIA Portal's "Rename"
-does: sources (STL, SCL, LAD/FBD text), symbol tables and watch tables (``.vat``).
+does: sources (STL, SCL, LAD/FBD and S7-Graph text), symbol tables and watch tables (``.vat``).
 
 What a name is comes from the compiler (``xref``): the symbol table and the program decide that
 ``"Motor"`` is ``Q 4.0`` or that ``"Data".Speed`` is a member of DB 5. Where it is written is
@@ -70,7 +70,7 @@ class _Token:
 def _tokens(text: str, suffix: str) -> Iterator[_Token]:
     """Quoted names and words of a source, outside comments, strings and title lines."""
     scl = suffix == ".scl"
-    prose = suffix in (".awl", ".stl", ".lad", ".fbd")
+    prose = suffix in (".awl", ".stl", ".lad", ".fbd", ".graph")
     index, size = 0, len(text)
     line_start = True
     while index < size:

@@ -16,6 +16,9 @@ Decisions (STEP 7 behaviour, written down here):
 - SCL has no networks: its uses have ``network: null``; its column is the statement's.
 - LAD/FBD: a use is placed on its network's ``NETWORK`` line with the element id (the LAD
   editor selects the element; the text format keeps no position per element).
+- S7-Graph: a use is placed on the line of the part it was written in (the step's action row,
+  the transition, the interlock ...), with the origin element (``S3/A2``, ``T1/e1``; see
+  ``nasaq/lang/graph/SEMANTICS.md`` §5) and no network.
 - A block's own interface (``#var``: L stack, instance data through AR2, FC parameters) is not
   a project-wide operand and is not listed.
 """
@@ -134,7 +137,7 @@ class XrefEntry(BaseModel):
     file: str
     block: str = Field(description="'OB 1', 'FB 10'")
     block_name: str = Field(description="The block's symbol, empty when it has none")
-    language: str = Field(description="stl, scl, lad or fbd")
+    language: str = Field(description="stl, scl, lad, fbd or graph")
     network: int | None = Field(description="1-based network; null in SCL")
     line: int
     column: int
@@ -268,8 +271,8 @@ def project_uses(program: Program, texts: dict[str, str]) -> list[_Use]:
         if block.file not in texts or BLOCK_KINDS.get(block.kind) is None or not block.code:
             continue
         language = language_of(block.file)
-        if language in ("lad", "fbd") and block.file not in lowered:
-            lowered[block.file] = lower_file(block.file, texts[block.file])
+        if language in ("lad", "fbd", "graph") and block.file not in lowered:
+            lowered[block.file] = _lowered(block.file, texts[block.file], language)
         for instr in block.code:
             origin = instr.origin
             if origin is None or origin.file not in texts:
@@ -292,6 +295,15 @@ def project_uses(program: Program, texts: dict[str, str]) -> list[_Use]:
                     )
                 )
     return found
+
+
+def _lowered(file: str, text: str, language: str | None) -> LoweredFile:
+    """The STL a LAD/FBD or S7-Graph file lowers to, with its map back to the file's lines."""
+    if language == "graph":
+        from nasaq.lang.graph.compile import lower_file as lower_graph  # Graph builds on LAD
+
+        return lower_graph(file, text)
+    return lower_file(file, text)
 
 
 class _Names:

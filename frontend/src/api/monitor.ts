@@ -24,7 +24,8 @@ export type ClientMessage =
   | RunScans
   | PlantOperate
   | PlantFault
-  | PlantReset;
+  | PlantReset
+  | GraphControl;
 
 /** CPU state in every frame where it changed (mode, scans, clock, cycle statistic). */
 export interface SubscribeCpu {
@@ -222,6 +223,23 @@ export interface PlantReset {
 }
 
 /**
+ * S7-Graph's Control Sequencer (Debug > Control Sequencer) on the instance DB `db` of a
+ * Graph FB (`DB1` or its symbol): select a mode (`auto`, `man`, `tap`, `top`),
+ * acknowledge a supervision error (`ack`), switch step `step` on or off in MAN
+ * (`step_on`, `step_off`), `push` (T_PUSH once), `init` or `off` the sequencer for
+ * one call, switch its interlock or supervision check on or off. The FB acts at its next call
+ * (the instance DB's mailbox, `nasaq/lang/graph/SEMANTICS.md` §4).
+ */
+export interface GraphControl {
+  /** Echoed in the ack or error that answers it */
+  ref?: number | null;
+  type: 'graph_control';
+  db: string;
+  op: 'auto' | 'man' | 'tap' | 'top' | 'ack' | 'step_on' | 'step_off' | 'push' | 'init' | 'off' | 'interlock_on' | 'interlock_off' | 'supervision_on' | 'supervision_off';
+  step?: number | null;
+}
+
+/**
  * Where a breakpoint goes: a source line (`file` + `line`, STL or SCL), or a block with
  * an STL instruction index or a network (1-based), or a block with a line of its source.
  */
@@ -299,15 +317,17 @@ export interface WatchValue {
 
 /**
  * One sampled execution of the open block: rows for the instructions that ran, and for a
- * LAD/FBD block the status of each element that ran (an element absent did not run).
+ * LAD/FBD block the status of each element that ran (an element absent did not run); for an
+ * S7-Graph FB, `graph` (null for every other block, and for a Graph FB that did not run).
  */
 export interface BlockStatus {
   block: string;
-  language: 'stl' | 'scl' | 'lad' | 'fbd';
+  language: 'stl' | 'scl' | 'lad' | 'fbd' | 'graph';
   scan: number;
   instructions: InstructionStatus[];
   lines: LineStatus[];
   elements: ElementStatus[];
+  graph: GraphStatus | null;
 }
 
 export interface TrendSample {
@@ -409,6 +429,20 @@ export interface ElementStatus {
   pins: Record<string, boolean | number | string | null>;
 }
 
+/**
+ * The sequencer state of an S7-Graph FB, read from the instance DB its sampled call used
+ * (`db`) at the end of that scan: the operating mode and every step and transition.
+ */
+export interface GraphStatus {
+  /** The instance read, 'DB1'; a multi-instance: 'DB1' and 'at' */
+  db: string;
+  /** Byte offset of the instance in db (multi-instance) */
+  at: number;
+  mode: 'AUTO' | 'MAN' | 'TAP' | 'TOP' | null;
+  steps: GraphStepStatus[];
+  transitions: GraphTransitionStatus[];
+}
+
 export interface StackFrame {
   block: string;
   instruction: number;
@@ -421,4 +455,27 @@ export interface Variable {
   name: string;
   type: string;
   value: boolean | number | string | null;
+}
+
+/**
+ * A step of an S7-Graph FB as the chart draws it online: `disturbed` is an active step
+ * with an interlock error (`interlock_error`, LA) or a supervision error not yet
+ * acknowledged (`supervision_error`, VA). `t_ms`/`u_ms`: its time active (current or
+ * last activation), and the same without the time spent disturbed.
+ */
+export interface GraphStepStatus {
+  number: number;
+  name: string;
+  state: 'inactive' | 'active' | 'disturbed';
+  t_ms: number;
+  u_ms: number;
+  interlock_error: boolean;
+  supervision_error: boolean;
+}
+
+/** A transition: `tt`, its condition was evaluated true in the FB's last call. */
+export interface GraphTransitionStatus {
+  number: number;
+  name: string;
+  tt: boolean;
 }

@@ -81,8 +81,8 @@ export interface Diagnostic {
   span: Span | null;
 }
 
-/** What a project file holds, by its suffix: STL, SCL, LAD/FBD, a symbol table or a watch table. */
-export type FileLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'symbols' | 'watch' | 'cpu' | 'plant';
+/** What a project file holds, by its suffix: STL, SCL, LAD/FBD, S7-Graph, a symbol table or a watch table. */
+export type FileLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'graph' | 'symbols' | 'watch' | 'cpu' | 'plant';
 /** The language a block is written in: its file's (LAD and FBD blocks are kept as text). */
 export type BlockLanguage = Exclude<FileLanguage, 'symbols' | 'watch' | 'cpu' | 'plant'>;
 

@@ -7,7 +7,7 @@ import { loadMonaco, type MonacoApi } from './monaco/load';
 import { THEME_NAME } from './monaco/constants';
 import { bindModel, type ModelSource } from './intellisense/modelRegistry';
 
-export type SourceLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'symbols' | 'cpu' | 'plant';
+export type SourceLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'graph' | 'symbols' | 'cpu' | 'plant';
 
 /** Monaco's language of each source language: LAD and FBD share their text format, symbol
  * tables are plain CSV-like text. */
@@ -16,6 +16,7 @@ const MODEL_LANGUAGE: Record<SourceLanguage, string> = {
   scl: 'scl',
   lad: 'lad',
   fbd: 'lad',
+  graph: 'graph', // S7-Graph as text until the chart editor (editor/languages/graph.ts)
   symbols: 'plaintext',
   cpu: 'plaintext', // cpu.properties: key = value lines, shown as a page (cpuprops/)
   plant: 'plaintext', // <name>.plant: the project's virtual plant, YAML (plants/)

@@ -19,7 +19,7 @@ import { LadSourceViews, StlSourceViews, type DiagramView } from '../lad/Diagram
 import { XrefEditorActions } from '../xref/XrefEditorActions';
 import './source.css';
 
-const LANGUAGE_NAMES = { stl: 'STL', scl: 'SCL', lad: 'LAD', fbd: 'FBD', cpu: 'CPU', plant: 'YAML' } as const;
+const LANGUAGE_NAMES = { stl: 'STL', scl: 'SCL', lad: 'LAD', fbd: 'FBD', graph: 'S7-Graph', cpu: 'CPU', plant: 'YAML' } as const;
 
 /** How long "no definition here" stays in the status line. */
 const NOTICE_MS = 4000;
@@ -118,7 +118,10 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
             <XrefEditorActions editor={editor} monaco={monaco} projectId={file.projectId} onNothing={showNotice} />
           </>
         )
-      : undefined;
+      : file && tab.language === 'graph'
+        ? // An S7-Graph FB as text: cross-references work; its online status is the chart's (next issue).
+          (editor, monaco) => <XrefEditorActions editor={editor} monaco={monaco} projectId={file.projectId} onNothing={showNotice} />
+        : undefined;
 
   const codeEditor = (
     <CodeEditor

@@ -8,6 +8,7 @@ export function languageOfFile(name: string): SourceLanguage | null {
   if (suffix === '.scl') return 'scl';
   if (suffix === '.lad') return 'lad';
   if (suffix === '.fbd') return 'fbd';
+  if (suffix === '.graph') return 'graph';
   if (['.sdf', '.asc', '.seq', '.csv'].includes(suffix)) return 'symbols';
   if (name.toLowerCase() === 'cpu.properties') return 'cpu'; // the CPU properties page
   if (suffix === '.plant') return 'plant'; // the project's virtual plant (YAML)
@@ -15,4 +16,4 @@ export function languageOfFile(name: string): SourceLanguage | null {
 }
 
 /** The suffix a new source of the language gets. */
-export const SOURCE_SUFFIX = { stl: 'awl', scl: 'scl', lad: 'lad' } as const;
+export const SOURCE_SUFFIX = { stl: 'awl', scl: 'scl', lad: 'lad', graph: 'graph' } as const;

@@ -47,6 +47,19 @@ import plantsAr from '../plants/locales/ar.json';
 import plantsFa from '../plants/locales/fa.json';
 import plantsVi from '../plants/locales/vi.json';
 
+import graphChecksEn from '../graph/locales/en.json';
+import graphChecksAr from '../graph/locales/ar.json';
+import graphChecksFa from '../graph/locales/fa.json';
+import graphChecksVi from '../graph/locales/vi.json';
+import graphSyntaxEn from '../graph/locales-syntax/en.json';
+import graphSyntaxAr from '../graph/locales-syntax/ar.json';
+import graphSyntaxFa from '../graph/locales-syntax/fa.json';
+import graphSyntaxVi from '../graph/locales-syntax/vi.json';
+import graphRunEn from '../graph/locales-run/en.json';
+import graphRunAr from '../graph/locales-run/ar.json';
+import graphRunFa from '../graph/locales-run/fa.json';
+import graphRunVi from '../graph/locales-run/vi.json';
+
 /** The interface languages, in the order the language switch lists them. */
 export const LANGUAGES = ['en', 'ar', 'fa', 'vi'] as const;
 export type Language = (typeof LANGUAGES)[number];
@@ -62,10 +75,10 @@ export const LANGUAGE_STORAGE_KEY = 'nasaq.lang';
  * its own top-level namespace and may add `problems.<key>` texts for the diagnostic codes it owns.
  */
 const FEATURES = {
-  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn, phrasesEn, examplesEn, lessonPaneEn, plantsEn],
-  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr, phrasesAr, examplesAr, lessonPaneAr, plantsAr],
-  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa, phrasesFa, examplesFa, lessonPaneFa, plantsFa],
-  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi, phrasesVi, examplesVi, lessonPaneVi, plantsVi],
+  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn, phrasesEn, examplesEn, lessonPaneEn, plantsEn, graphChecksEn, graphSyntaxEn, graphRunEn],
+  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr, phrasesAr, examplesAr, lessonPaneAr, plantsAr, graphChecksAr, graphSyntaxAr, graphRunAr],
+  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa, phrasesFa, examplesFa, lessonPaneFa, plantsFa, graphChecksFa, graphSyntaxFa, graphRunFa],
+  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi, phrasesVi, examplesVi, lessonPaneVi, plantsVi, graphChecksVi, graphSyntaxVi, graphRunVi],
 } as const;
 
 export type Catalogue = typeof en & { lad: typeof ladEn } & typeof cpuEn &

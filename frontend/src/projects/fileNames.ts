@@ -1,4 +1,5 @@
 import type { FileInfo, TreeBlock } from '../api/types';
+import { newGraphText } from '../editor/languages/graph';
 
 /** Whether a project already has a file of this name (letter case does not count, as on the server). */
 export function nameTaken(files: readonly FileInfo[], name: string, except?: string): boolean {
@@ -12,7 +13,7 @@ function split(name: string): [string, string] {
 }
 
 /** `Source1.awl`, or the first number no file of the project uses yet. */
-export function freeSourceName(files: readonly FileInfo[], suffix: 'awl' | 'scl' | 'lad' | 'fbd'): string {
+export function freeSourceName(files: readonly FileInfo[], suffix: 'awl' | 'scl' | 'lad' | 'fbd' | 'graph'): string {
   let number = 1;
   while (nameTaken(files, `Source${number}.${suffix}`)) number += 1;
   return `Source${number}.${suffix}`;
@@ -34,22 +35,25 @@ export function freeCopyName(files: readonly FileInfo[], name: string): string {
   return candidate;
 }
 
-/** The first FC number the project's blocks leave free. */
-function freeFc(blocks: readonly TreeBlock[]): number {
-  const used = new Set(blocks.filter((block) => block.kind === 'FC').map((block) => block.number));
+/** The first FC (or FB) number the project's blocks leave free. */
+function freeFc(blocks: readonly TreeBlock[], kind: 'FC' | 'FB' = 'FC'): number {
+  const used = new Set(blocks.filter((block) => block.kind === kind).map((block) => block.number));
   let number = 1;
   while (used.has(number)) number += 1;
   return number;
 }
 
 /** The languages a new source can be written in. */
-export type NewSourceLanguage = 'stl' | 'scl' | 'lad' | 'fbd';
+export type NewSourceLanguage = 'stl' | 'scl' | 'lad' | 'fbd' | 'graph';
 
 /**
  * What a new source holds: an empty function with the first free FC number, which compiles. A
  * LAD/FBD source shows the shape of a network in a comment (the text format has no empty rung).
+ * An S7-Graph source is an FB with the first free FB number: a sequencer of two steps.
  */
 export function newSourceText(language: NewSourceLanguage, blocks: readonly TreeBlock[]): string {
+  // An S7-Graph source is an FB (a sequencer needs its instance DB): the first free FB number.
+  if (language === 'graph') return newGraphText(freeFc(blocks, 'FB'));
   const number = freeFc(blocks);
   if (language === 'lad' || language === 'fbd') {
     return `FUNCTION FC ${number} : VOID

@@ -25,7 +25,7 @@ import { ConfirmDialog, FileNameDialog, ProjectNameDialog } from './TreeDialogs'
 import type { TreeRow } from './treeRows';
 
 type TreeDialog =
-  | { kind: 'new'; projectId: number; language: 'stl' | 'scl' | 'lad' | 'symbols' }
+  | { kind: 'new'; projectId: number; language: 'stl' | 'scl' | 'lad' | 'graph' | 'symbols' }
   | { kind: 'rename'; projectId: number; name: string }
   | { kind: 'duplicate'; projectId: number; name: string }
   | { kind: 'deleteFile'; projectId: number; name: string }
@@ -110,6 +110,7 @@ export function useTreeActions({ showError, selectKey, onProjectDeleted, onProje
       { id: 'new-stl', label: t('projects.actions.newStl'), onSelect: () => setDialog({ kind: 'new', projectId, language: 'stl' }) },
       { id: 'new-scl', label: t('projects.actions.newScl'), onSelect: () => setDialog({ kind: 'new', projectId, language: 'scl' }) },
       { id: 'new-lad', label: t('projects.actions.newLad'), onSelect: () => setDialog({ kind: 'new', projectId, language: 'lad' }) },
+      { id: 'new-graph', label: t('projects.actions.newGraph'), onSelect: () => setDialog({ kind: 'new', projectId, language: 'graph' }) },
       {
         id: 'new-symbols',
         label: t('projects.actions.newSymbols'),
@@ -187,7 +188,7 @@ export function useTreeActions({ showError, selectKey, onProjectDeleted, onProje
           // A symbol table starts empty (no example rows to delete); a source as an empty FC.
           const typed = languageOfFile(name) ?? language;
           const text =
-            typed === 'symbols' ? '' : newSourceText(typed === 'scl' || typed === 'fbd' || typed === 'lad' ? typed : 'stl', projectContents.get(projectId)?.blocks ?? []);
+            typed === 'symbols' ? '' : newSourceText(typed === 'scl' || typed === 'fbd' || typed === 'lad' || typed === 'graph' ? typed : 'stl', projectContents.get(projectId)?.blocks ?? []);
           const info = await saveFile(projectId, name, { text });
           projectContents.putFile(projectId, info);
           projectContents.reloadSoon(projectId);

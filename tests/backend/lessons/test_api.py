@@ -20,6 +20,7 @@ def settings(tmp_path: Path, dist: Path) -> Settings:
         frontend_dist=dist,
         examples_dir=tmp_path / "no-examples",
         lessons_dir=COURSE,
+        session_workers=1,  # as the shared fixture: a worker's start costs a second
     )
 
 

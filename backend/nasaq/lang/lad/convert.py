@@ -3,6 +3,8 @@
 - LAD/FBD → STL always succeeds: the STL the blocks lower to (``to_stl``), what the CPU runs.
 - LAD ↔ FBD always succeeds: both are views of the same network model; the file says which
   view its blocks are in (``LANGUAGE FBD``).
+- S7-Graph → STL: the STL the FB compiles to (``nasaq.lang.graph.compile``); a Graph source
+  converts to nothing else, and nothing converts to S7-Graph (LAD502, LAD503).
 - STL → LAD/FBD goes network by network (``from_stl``): a network with LAD shape becomes a rung,
   any other stays STL inside the LAD block with the reason it does not convert, as STEP 7 shows
   an STL network in the LAD view. Those reasons come back as diagnostics (severity info).
@@ -25,6 +27,7 @@ from nasaq.lang.lad.to_stl import temp_prefix
 Target = Literal["stl", "lad", "fbd"]
 TARGETS: tuple[Target, ...] = ("stl", "lad", "fbd")
 STL_SUFFIXES = (".awl", ".stl")
+GRAPH_SUFFIXES = (".graph",)  # nasaq.lang.graph.text.SUFFIXES
 
 _BLOCK = re.compile(
     r"^[ \t]*(ORGANIZATION_BLOCK|FUNCTION_BLOCK|FUNCTION)\b[^\n]*$", re.IGNORECASE | re.MULTILINE
@@ -53,12 +56,31 @@ def _suffix(name: str) -> str:
 def convert(name: str, text: str, to: Target) -> Converted:
     """``text`` (the file ``name``, its kind by suffix) as ``to``."""
     suffix = _suffix(name)
+    if suffix in GRAPH_SUFFIXES:
+        return _from_graph(name, text, to)
     if suffix in LAD_SUFFIXES:
         return _from_lad(name, text, to)
     if suffix in STL_SUFFIXES:
         return _from_stl(name, text, to)
     problem = render("LAD501", Span(file=name, line=1, column=1), file=name)
     return Converted("", [problem])
+
+
+def _from_graph(name: str, text: str, to: Target) -> Converted:
+    """An S7-Graph FB converts to the STL it compiles to, as STEP 7 shows a Graph FB's code;
+    its sequencer has no LAD/FBD form (LAD502)."""
+    if to != "stl":
+        problem = render("LAD502", Span(file=name, line=1, column=1), file=name, to=to.upper())
+        return Converted("", [problem])
+    from nasaq.lang.graph.compile import lower_file as lower_graph  # Graph builds on LAD
+
+    lowered = lower_graph(name, text)
+    return Converted(lowered.stl, lowered.diagnostics)
+
+
+def refused_to_graph(name: str) -> Converted:
+    """Nothing converts to S7-Graph: a sequencer is written, not derived from code (LAD503)."""
+    return Converted("", [render("LAD503", Span(file=name, line=1, column=1), file=name)])
 
 
 def _from_lad(name: str, text: str, to: Target) -> Converted:

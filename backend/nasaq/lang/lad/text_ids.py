@@ -70,3 +70,10 @@ def number_elements(network: Network) -> tuple[Network, list[str]]:
     ]
     named = network.model_copy(update={"logic": logic, "outputs": outputs})
     return named, numbering.duplicates
+
+
+def number_series(series: Series) -> tuple[Series, list[str]]:
+    """``series`` numbered on its own from ``e1`` (a condition of a Graph step or transition),
+    and the ids that name more than one element."""
+    numbering = _Numbering()
+    return numbering.series(series), numbering.duplicates

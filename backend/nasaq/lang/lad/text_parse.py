@@ -85,6 +85,7 @@ _AFTER_STL = re.compile(
     r"^[ \t]*(?:NETWORK|END_ORGANIZATION_BLOCK|END_FUNCTION_BLOCK|END_FUNCTION)\b",
     re.IGNORECASE | re.MULTILINE,
 )
+_REASON = re.compile(r"[ \t]+REASON[ \t]+([A-Za-z_]\w*)", re.IGNORECASE)
 _STATUS_BITS = frozenset(get_args(StatusBit))
 _NAME = re.compile(r"[A-Za-z_]\w*\Z")
 _ID = re.compile(r"@[A-Za-z_]\w*")
@@ -322,10 +323,9 @@ class LadReader:
         scan = self.scan
         at = scan.where()
         scan.word()
-        reason: str | None = None
-        if scan.peek_word() == "REASON":
-            scan.word()
-            reason = scan.word() if scan.peek_word() not in (None, "END_STL") else None
+        # REASON only on the STL line itself: the next line is the network's first STL line.
+        given = _REASON.match(scan.text, scan.pos)
+        reason = given.group(1) if given else None
         scan.skip_line()
         text = scan.text
         start = scan.pos + 1 if scan.pos < len(text) else scan.pos
@@ -391,7 +391,12 @@ class LadReader:
             else:
                 scan.report("LAD117", end="END_OUTPUTS", found=scan.found())
                 failed = True
-                if scan.at_end() or word in _NETWORK_SYNC or word == "END_RUNG":
+                if (
+                    scan.at_end()
+                    or word in _NETWORK_SYNC
+                    or word == "END_RUNG"
+                    or word in scan.host_words
+                ):
                     break
                 scan.skip_to(frozenset({"BRANCH", "END_OUTPUTS", "END_RUNG"}) | _NETWORK_SYNC)
         return None if failed else outputs  # no branch yet: a rung being drawn
@@ -424,7 +429,7 @@ class LadReader:
         items: list[_Item] = []
         while not scan.at_end():
             word = scan.peek_word()
-            if word in stops or word in STRUCTURE:
+            if word in stops or word in STRUCTURE or word in scan.host_words:
                 break
             if in_pin and (scan.looking_at(",") or scan.looking_at(")")):
                 break

@@ -221,3 +221,19 @@ def print_blocks(blocks: list[LadBlock]) -> str:
         printer.block(block)
         parts.append("\n".join(printer.out) + "\n")
     return "\n".join(parts)
+
+
+def network_lines(network: Network) -> list[str]:
+    """The lines of one network (the Graph format's permanent instructions are LAD networks)."""
+    printer = _Printer()
+    printer.network(network)
+    return printer.out
+
+
+def series_lines(series: Series, depth: int) -> list[str]:
+    """The elements of ``series`` one per line at ``depth``, ids numbered from ``e1`` as in a
+    rung without its final element (the Graph format's conditions)."""
+    printer = _Printer()
+    for element in series.elements:
+        printer.element(element, depth)
+    return printer.out

@@ -17,7 +17,7 @@ from typing import Any
 from nasaq.diagnostics import Diagnostic, Span, render
 
 _WORD = re.compile(r"[A-Za-z_]\w*")
-_BLANK = re.compile(r"\s+")
+_SKIPPABLE = re.compile(r"(?:\s+|//[^\n]*|\(\*[\s\S]*?\*\))*")
 _PUNCTUATION = (":=", "=>", "(", ")", ",", ":", "=")
 
 
@@ -36,7 +36,11 @@ class Scanner:
     network: int | None = None
     truncated: bool = False
     ended: bool = False
+    # The structure words of a format that embeds LAD text (the Graph format's END_CONDITION,
+    # STEP ...): while reading LAD there, an element, operand or recovery ends before them.
+    host_words: frozenset[str] = frozenset()
     _lines: list[int] = field(default_factory=list)
+    _peeked: re.Match[str] | None = None  # the last peeked word: ``word`` takes it
 
     def __post_init__(self) -> None:
         self._lines = [0] + [m.end() for m in re.finditer(r"\n", self.text)]
@@ -64,23 +68,15 @@ class Scanner:
     def skip(self) -> None:
         """Skips blanks and comments; an unclosed ``(*`` is reported and ends the text."""
         text = self.text
-        while True:
-            blank = _BLANK.match(text, self.pos)
-            if blank:
-                self.pos = blank.end()
-            if text.startswith("//", self.pos):
-                end = text.find("\n", self.pos)
-                self.pos = len(text) if end < 0 else end
-            elif text.startswith("(*", self.pos):
-                end = text.find("*)", self.pos + 2)
-                if end < 0:
-                    self.report("LAD126")
-                    self.truncated = True
-                    self.pos = len(text)
-                    return
-                self.pos = end + 2
-            else:
-                return
+        pos = self.pos
+        if pos < len(text) and not text[pos].isspace() and text[pos] not in "/(":
+            return  # the common case: already at a word or a mark
+        skipped = _SKIPPABLE.match(text, pos)
+        self.pos = pos = skipped.end() if skipped else pos
+        if text.startswith("(*", pos):  # a closed one would have been skipped
+            self.report("LAD126")
+            self.truncated = True
+            self.pos = len(text)
 
     def at_end(self) -> bool:
         self.skip()
@@ -90,13 +86,15 @@ class Scanner:
     def peek_word(self) -> str | None:
         """The next word in upper case (keywords are case-insensitive), not consumed."""
         self.skip()
-        found = _WORD.match(self.text, self.pos)
+        found = self._peeked = _WORD.match(self.text, self.pos)
         return found.group().upper() if found else None
 
     def word(self) -> str:
         """Consumes the next word as written (the caller has peeked it)."""
         self.skip()
-        found = _WORD.match(self.text, self.pos)
+        found = self._peeked
+        if found is None or found.start() != self.pos:
+            found = _WORD.match(self.text, self.pos)
         assert found is not None
         self.pos = found.end()
         return found.group()
@@ -152,7 +150,9 @@ class Scanner:
                 break
             if depth == 0 and char in " \t" and self.pos > start:
                 word = _WORD.match(text, self.pos + 1)
-                if word and word.group().upper() in keywords:
+                if word and (
+                    word.group().upper() in keywords or word.group().upper() in self.host_words
+                ):
                     break
             if text.startswith("//", self.pos) or text.startswith("(*", self.pos):
                 parts.append(text[start : self.pos])
@@ -194,7 +194,8 @@ class Scanner:
                 return
             word = _WORD.match(text, self.pos)
             if word:
-                if depth == 0 and word.group().upper() in stops:
+                upper = word.group().upper()
+                if depth == 0 and (upper in stops or upper in self.host_words):
                     return
                 self.pos = word.end()
                 continue

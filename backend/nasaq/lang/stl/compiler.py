@@ -33,6 +33,7 @@ from nasaq.lang.types import BlockType, StructType, type_text
 STL_SUFFIXES = (".awl", ".stl")
 SCL_SUFFIXES = (".scl",)
 LAD_SUFFIXES = (".lad", ".fbd")  # nasaq.lang.lad.text.SUFFIXES
+GRAPH_SUFFIXES = (".graph",)  # nasaq.lang.graph.text.SUFFIXES
 WATCH_TABLE_SUFFIXES = (".vat",)  # nasaq.workbench.watch_table: project files, not program
 CPU_PROPERTIES_SUFFIXES = (".properties",)  # nasaq.workbench.cpu_properties: not program
 PLANT_SUFFIXES = (".plant",)  # nasaq.plants.plant_file: the project's virtual plant, not program
@@ -157,6 +158,9 @@ class _Compiler:
             if suffix in LAD_SUFFIXES:
                 self.read_lad(source)
                 continue
+            if suffix in GRAPH_SUFFIXES:
+                self.read_graph(source)
+                continue
             if suffix not in STL_SUFFIXES:
                 self.diagnostics.append(
                     problem("STL110", source.name, ast.Loc(1, 1, 1, 1), file=source.name)
@@ -212,12 +216,32 @@ class _Compiler:
             size = {"size_kb": len(text) // 1024, "limit_kb": MAX_SOURCE_CHARS // 1024}
             self.diagnostics.append(problem("STL111", source.name, where, file=source.name, **size))
             return
-        from nasaq.lang.lad.compile import lower_file, moved_to_lad  # LAD builds on this package
+        from nasaq.lang.lad.compile import lower_file  # LAD builds on this package
 
-        lowered = lower_file(source.name, text)
+        self._read_lowered(source, lower_file(source.name, text))
+
+    def read_graph(self, source: SourceFile) -> None:
+        """An S7-Graph file is read as the STL its FBs lower to (``nasaq.lang.graph.compile``),
+        its problems placed on the graph lines as a LAD file's are."""
+        text = decode(source.text)
+        if len(text) > MAX_SOURCE_CHARS:
+            size = {"size_kb": len(text) // 1024, "limit_kb": MAX_SOURCE_CHARS // 1024}
+            where = ast.Loc(1, 1, 1, 1)
+            self.diagnostics.append(problem("STL111", source.name, where, file=source.name, **size))
+            return
+        from nasaq.lang.graph.compile import lower_file  # Graph builds on this package
+
+        self._read_lowered(source, lower_file(source.name, text))
+
+    def _read_lowered(self, source: SourceFile, lowered: Any) -> None:
+        """A file read as generated STL (``LoweredFile``) with its line map."""
+        from nasaq.lang.lad.compile import moved_to_lad
+
+        where = ast.Loc(1, 1, 1, 1)
         self.lad_files[source.name] = lowered
         self.diagnostics += lowered.diagnostics
-        parsed = parse_source(source.name, lowered.stl)
+        # A Graph file comes with its syntax tree (``nasaq.lang.graph.lower_syntax``).
+        parsed = getattr(lowered, "parsed", None) or parse_source(source.name, lowered.stl)
         self.diagnostics += [moved_to_lad(found, lowered) for found in parsed.diagnostics]
         if not parsed.source.blocks and not lowered.diagnostics:
             self.diagnostics.append(problem("STL112", source.name, where, file=source.name))

@@ -49,6 +49,7 @@ import 'monaco-editor/editor/contrib/wordHighlighter/browser/wordHighlighter';
 import 'monaco-editor/editor/contrib/wordOperations/browser/wordOperations';
 import 'monaco-editor/editor/contrib/wordPartOperations/browser/wordPartOperations';
 
+import { GRAPH_LANGUAGE_ID, graphConfiguration, graphFoldingRanges, graphLanguage } from '../languages/graph';
 import { LAD_LANGUAGE_ID, ladConfiguration, ladFoldingRanges, ladLanguage } from '../languages/lad';
 import { SCL_LANGUAGE_ID, sclConfiguration, sclFoldingRanges, sclLanguage } from '../languages/scl';
 import { formatScl } from '../languages/sclFormat';
@@ -94,6 +95,8 @@ monaco.languages.registerDocumentFormattingEditProvider(SCL_LANGUAGE_ID, {
 // LAD and FBD blocks as text, until the graphical editors draw them (the STL of networks
 // kept as STL is embedded).
 register(LAD_LANGUAGE_ID, ['.lad', '.fbd'], ladLanguage, ladConfiguration, ladFoldingRanges);
+// S7-Graph FBs as text, until the chart editor draws them (conditions are LAD text).
+register(GRAPH_LANGUAGE_ID, ['.graph'], graphLanguage, graphConfiguration, graphFoldingRanges);
 // Completion and hover help for both languages, from the project outline (intellisense/).
 registerIntellisense(monaco);
 monaco.editor.defineTheme(THEME_NAME, nasaqLightTheme);
