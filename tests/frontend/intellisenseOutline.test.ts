@@ -4,7 +4,16 @@
  */
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import openapi from '../../frontend/src/api/openapi.json';
-import { getOutline, type OutlineBlock, type OutlineMember, type OutlineSymbol, type ProjectOutline } from '../../frontend/src/api/outline';
+import {
+  getOutline,
+  type OutlineBlock,
+  type OutlineMember,
+  type OutlineSequencer,
+  type OutlineStep,
+  type OutlineSymbol,
+  type OutlineTransition,
+  type ProjectOutline,
+} from '../../frontend/src/api/outline';
 import type { FileInfo } from '../../frontend/src/api/types';
 import { findDefinition } from '../../frontend/src/editor/definitions';
 import { OUTLINE_RELOAD_MS, createOutlineStore } from '../../frontend/src/editor/intellisense/outlineStore';
@@ -40,8 +49,12 @@ const blockFields: Fields<OutlineBlock> = {
   return_type: true,
   instance_of: true,
   members: true,
+  sequencers: true,
 };
 const outlineFields: Fields<ProjectOutline> = { symbols: true, blocks: true };
+const sequencerFields: Fields<OutlineSequencer> = { name: true, line: true, steps: true, transitions: true };
+const stepFields: Fields<OutlineStep> = { number: true, name: true, initial: true, line: true };
+const transitionFields: Fields<OutlineTransition> = { number: true, name: true, source: true, target: true, line: true };
 
 const OUTLINE: ProjectOutline = {
   symbols: [
@@ -66,6 +79,9 @@ describe('the outline API', () => {
     ['Member', memberFields],
     ['OutlineBlock', blockFields],
     ['ProjectOutline', outlineFields],
+    ['OutlineSequencer', sequencerFields],
+    ['OutlineStep', stepFields],
+    ['OutlineTransition', transitionFields],
   ])('%s matches the OpenAPI document', (schema, record) => {
     expect(propertiesOf(schema).length).toBeGreaterThan(0);
     expect(Object.keys(record).sort()).toEqual(propertiesOf(schema));

@@ -36,6 +36,32 @@ export interface OutlineMember {
   line: number | null;
 }
 
+/** An S7-Graph step (backend `OutlineStep`). */
+export interface OutlineStep {
+  number: number;
+  name: string;
+  initial: boolean;
+  line: number;
+}
+
+/** An S7-Graph transition from its source step(s) to its target step(s) (backend `OutlineTransition`). */
+export interface OutlineTransition {
+  number: number;
+  name: string;
+  source: string[];
+  /** Empty: a sequence end. */
+  target: string[];
+  line: number;
+}
+
+/** One sequencer of an S7-Graph FB, for jumping to its steps and transitions (backend `OutlineSequencer`). */
+export interface OutlineSequencer {
+  name: string;
+  line: number;
+  steps: OutlineStep[];
+  transitions: OutlineTransition[];
+}
+
 /** A block with its members (backend `OutlineBlock`). */
 export interface OutlineBlock {
   kind: BlockKind;
@@ -47,6 +73,8 @@ export interface OutlineBlock {
   return_type: string | null;
   instance_of: string | null;
   members: OutlineMember[];
+  /** An S7-Graph FB's sequencers; absent or null for every other block. */
+  sequencers?: OutlineSequencer[] | null;
 }
 
 export interface ProjectOutline {
