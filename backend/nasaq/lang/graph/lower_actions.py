@@ -16,7 +16,7 @@ from nasaq.lang.graph.lower_arith import Arithmetic, ArithmeticProblem
 from nasaq.lang.graph.lower_chart import Chart
 from nasaq.lang.graph.lower_conditions import Conditions
 from nasaq.lang.graph.lower_emit import Emitter
-from nasaq.lang.graph.lower_machinery import m
+from nasaq.lang.graph.lower_machinery import activate, m
 from nasaq.lang.graph.model import Action, Step
 
 _TIMER = re.compile(r"^T\s*\d+$", re.IGNORECASE)
@@ -224,11 +224,7 @@ class Actions:
                 skip = out.label()
                 out.emit("AN", m(target, "X"))
                 out.emit("JCN", skip)
-                out.emit("S", m(target, "X"))
-                out.emit("S", m(target, "PS1"))
-                out.emit("L", "L#0")
-                out.emit("T", m(target, "T"))
-                out.emit("T", m(target, "U"))
+                activate(out, target, "PS1")
                 out.mark(skip)
             else:
                 out.emit("A", m(target, "X"))

@@ -20,6 +20,16 @@ def m(step: Step | Transition, member: str) -> str:
     return f"#{step.name}.{member}"
 
 
+def activate(out: Emitter, step: Step, event: str = "S1") -> None:
+    """With RLO 1 (after the caller's check that ``step`` is inactive): switches it on,
+    raising ``event`` (``S1`` now, or ``PS1`` for the next call), its times starting at 0."""
+    out.emit("S", m(step, "X"))
+    out.emit("S", m(step, event))
+    out.emit("L", "L#0")
+    out.emit("T", m(step, "T"))
+    out.emit("T", m(step, "U"))
+
+
 def has_interlock(step: Step) -> bool:
     return step.interlock is not None
 
@@ -57,11 +67,7 @@ class Machinery:
                 kept = out.label()
                 out.emit("AN", m(step, "X"))
                 out.emit("JCN", kept)
-                out.emit("=", m(step, "X"))
-                out.emit("=", m(step, "S1"))
-                out.emit("L", "L#0")
-                out.emit("T", m(step, "T"))
-                out.emit("T", m(step, "U"))
+                activate(out, step)
                 out.mark(kept)
         self._clear_errors()
         out.emit("SET")
@@ -338,11 +344,7 @@ class Machinery:
             out.emit("==I")
             out.emit("AN", m(step, "X"))  # only an inactive step is switched on
             out.emit("JCN", other)
-            out.emit("S", m(step, "X"))
-            out.emit("S", m(step, "S1"))
-            out.emit("L", "L#0")
-            out.emit("T", m(step, "T"))
-            out.emit("T", m(step, "U"))
+            activate(out, step)
             out.mark(other)
         out.mark(off)
         out.emit("A", "#G7_E_S_OFF")
