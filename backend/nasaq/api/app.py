@@ -18,6 +18,7 @@ from nasaq.api import (
     examples,
     file_convert,
     files,
+    graph,
     health,
     lad,
     lessons,
@@ -90,6 +91,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     api.include_router(cpu_properties.router)
     api.include_router(convert.router)
     api.include_router(lad.router)
+    api.include_router(graph.router)
     api.include_router(xref.router)
     api.include_router(examples.router)
     api.include_router(lessons.router)

@@ -12,6 +12,7 @@ import type {
   ProjectCreate,
   UnsavedFile,
 } from './types';
+import type { GraphBlock } from '../graph/model';
 import type { LadBlock } from '../lad/model';
 
 /** Codes the client itself gives to failures that never reached an API answer. */
@@ -235,6 +236,22 @@ export interface LadRead {
 
 export function readLad(name: string, text: string, signal?: AbortSignal): Promise<LadRead> {
   return request<LadRead>('/api/lad/read', { method: 'POST', body: JSON.stringify({ name, text }), signal: signal ?? null });
+}
+
+/**
+ * An S7-Graph file read as the sequencer model (`POST /api/graph/read`): its blocks, its syntax
+ * problems (the chart is not drawn while there are errors), the checker's findings and, per
+ * block, the line of each part (`S3`, `T2`, `S3/A1`, `SEQ:<name>` ...).
+ */
+export interface GraphRead {
+  blocks: GraphBlock[];
+  diagnostics: Diagnostic[];
+  problems: Diagnostic[];
+  places: Record<string, number>[];
+}
+
+export function readGraph(name: string, text: string, signal?: AbortSignal): Promise<GraphRead> {
+  return request<GraphRead>('/api/graph/read', { method: 'POST', body: JSON.stringify({ name, text }), signal: signal ?? null });
 }
 
 /** A source converted between STL, LAD and FBD (`POST /api/convert`). */

@@ -59,6 +59,22 @@ import graphRunEn from '../graph/locales-run/en.json';
 import graphRunAr from '../graph/locales-run/ar.json';
 import graphRunFa from '../graph/locales-run/fa.json';
 import graphRunVi from '../graph/locales-run/vi.json';
+import graphChartEn from '../graph/locales-chart/en.json';
+import graphChartAr from '../graph/locales-chart/ar.json';
+import graphChartFa from '../graph/locales-chart/fa.json';
+import graphChartVi from '../graph/locales-chart/vi.json';
+import graphStepEn from '../graph/locales-step/en.json';
+import graphStepAr from '../graph/locales-step/ar.json';
+import graphStepFa from '../graph/locales-step/fa.json';
+import graphStepVi from '../graph/locales-step/vi.json';
+import graphControlEn from '../graph/locales-control/en.json';
+import graphControlAr from '../graph/locales-control/ar.json';
+import graphControlFa from '../graph/locales-control/fa.json';
+import graphControlVi from '../graph/locales-control/vi.json';
+import graphDocEn from '../graph/locales-doc/en.json';
+import graphDocAr from '../graph/locales-doc/ar.json';
+import graphDocFa from '../graph/locales-doc/fa.json';
+import graphDocVi from '../graph/locales-doc/vi.json';
 
 /** The interface languages, in the order the language switch lists them. */
 export const LANGUAGES = ['en', 'ar', 'fa', 'vi'] as const;
@@ -75,10 +91,10 @@ export const LANGUAGE_STORAGE_KEY = 'nasaq.lang';
  * its own top-level namespace and may add `problems.<key>` texts for the diagnostic codes it owns.
  */
 const FEATURES = {
-  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn, phrasesEn, examplesEn, lessonPaneEn, plantsEn, graphChecksEn, graphSyntaxEn, graphRunEn],
-  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr, phrasesAr, examplesAr, lessonPaneAr, plantsAr, graphChecksAr, graphSyntaxAr, graphRunAr],
-  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa, phrasesFa, examplesFa, lessonPaneFa, plantsFa, graphChecksFa, graphSyntaxFa, graphRunFa],
-  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi, phrasesVi, examplesVi, lessonPaneVi, plantsVi, graphChecksVi, graphSyntaxVi, graphRunVi],
+  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn, phrasesEn, examplesEn, lessonPaneEn, plantsEn, graphChecksEn, graphSyntaxEn, graphRunEn, graphChartEn, graphStepEn, graphControlEn, graphDocEn],
+  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr, phrasesAr, examplesAr, lessonPaneAr, plantsAr, graphChecksAr, graphSyntaxAr, graphRunAr, graphChartAr, graphStepAr, graphControlAr, graphDocAr],
+  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa, phrasesFa, examplesFa, lessonPaneFa, plantsFa, graphChecksFa, graphSyntaxFa, graphRunFa, graphChartFa, graphStepFa, graphControlFa, graphDocFa],
+  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi, phrasesVi, examplesVi, lessonPaneVi, plantsVi, graphChecksVi, graphSyntaxVi, graphRunVi, graphChartVi, graphStepVi, graphControlVi, graphDocVi],
 } as const;
 
 export type Catalogue = typeof en & { lad: typeof ladEn } & typeof cpuEn &
