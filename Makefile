@@ -26,6 +26,8 @@ help:
 	@echo "                  a lesson's Check with a tank in closed loop over 60 s virtual;"
 	@echo "                  S7-Graph: a 200-step sequencer's compile time, one call of it against"
 	@echo "                  hand-written STL, and the answer time for bad .graph sources"
+	@echo "                  and its chart: opened and drawn (< 1 s), monitored while the active"
+	@echo "                  step moves (longest main-thread task < 100 ms, Chromium)"
 	@echo "make conformance  awlsim's self-checking STL programs (downloads awlsim from PyPI)"
 	@echo "make install | make lock (re-pin Python dependencies) | make clean"
 

@@ -1,7 +1,7 @@
 /**
  * An S7-Graph source in the workbench, against the real server: the project tree creates one
- * (an FB with a sequencer that compiles), it opens in the text editor with the Graph keywords
- * coloured, and the tree shows its FB as GRAPH. In English and in Persian (right to left: the
+ * (an FB with a sequencer that compiles), it opens in its chart, and its text view shows it with
+ * the Graph keywords coloured, and the tree shows its FB as GRAPH. In English and in Persian (right to left: the
  * source stays left to right).
  */
 import type { Page } from '@playwright/test';
@@ -20,7 +20,7 @@ async function createGraph(page: Page, projectId: number, action: string, name: 
 }
 
 for (const language of ['en', 'fa'] as const) {
-  test(`a new S7-Graph source opens as text and its FB is in the tree (${language})`, async ({ page, watch }, info) => {
+  test(`a new S7-Graph source opens in its chart, its text coloured, and its FB is in the tree (${language})`, async ({ page, watch }, info) => {
     await page.goto('/');
     await chooseLanguage(page, language);
     const projectId = await expandProject(page, 'traffic-light');
@@ -32,6 +32,9 @@ for (const language of ['en', 'fa'] as const) {
     await createGraph(page, projectId, action, name);
 
     await expect(tree(page).getByTestId(`file-node-${projectId}-${name}`)).toBeVisible();
+    // It opens in its sequencer chart (issue 19); the text is one view away.
+    await expect(page.locator('.source-view:not([hidden]) [data-testid="graph-step-1"]')).toBeVisible({ timeout: 30_000 });
+    await page.locator('.source-view:not([hidden])').getByTestId('graph-view-text').click();
     const editor = visibleEditor(page);
     await expect(editor).toHaveAttribute('data-state', 'ready', { timeout: 30_000 });
     await expect(editor).toContainText('INITIAL_STEP Step1 (1)');
@@ -42,6 +45,8 @@ for (const language of ['en', 'fa'] as const) {
     });
     expect(modelLanguage).toBe('graph');
     // The Graph tokenizer colours the structure: INITIAL_STEP is a keyword, Step1 a label.
+    // (The editor was just shown by the view switch: its lines are tokenized a moment later.)
+    await expect(editor.locator('.view-line span span').filter({ hasText: /^INITIAL_STEP$/ }).first()).toBeVisible();
     const classes = await editor
       .locator('.view-line span span')
       .evaluateAll((spans) => spans.map((span) => [span.textContent ?? '', span.className] as const));

@@ -11,7 +11,7 @@ export const baseURL = `http://127.0.0.1:${port}`;
 // Each port gets its own folder, so runs on different ports (E2E_PORT) can go side by side.
 const output = path.join(__dirname, '.output', port === 8765 ? '' : String(port));
 const dataDir = path.join(output, 'data');
-const DOCS = /(screenshots|lesson-plants|lessons|plant-tank|io-panel|watch-tables|xref-rename)\.spec\.ts$/;
+const DOCS = /(screenshots|lesson-plants|lessons|plant-tank|io-panel|watch-tables|xref-rename|graph-monitor)\.spec\.ts$/;
 
 export default defineConfig({
   testDir: '.',

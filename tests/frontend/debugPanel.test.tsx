@@ -44,6 +44,8 @@ const HOLD: HoldState = {
     { block: 'FC10', instruction: 0, line: 17, file: 'Scale.scl', network: 1 },
     { block: 'OB1', instruction: 4, line: 14, file: 'OB1.awl', network: 1 },
   ],
+  graph_step: null,
+  graph_block: null,
 };
 
 let sockets: FakeSocket[] = [];

@@ -341,6 +341,8 @@ const HOLD: HoldState = {
   registers: { accu1: 42, accu2: 0, ar1: 0, ar2: 0, stw: 3, rlo: 1, sta: 1 },
   locals: [{ name: 'count', type: 'INT', value: 3 }],
   call_stack: [{ block: 'OB1', instruction: 3, line: 9, file: 'OB1.awl', network: 1 }],
+  graph_step: null,
+  graph_block: null,
 };
 
 describe('a hold', () => {

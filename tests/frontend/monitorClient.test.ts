@@ -65,6 +65,8 @@ describe('mergeFrame', () => {
       registers: { ACCU1: 1 },
       locals: [],
       call_stack: [],
+      graph_step: null,
+      graph_block: null,
     };
     let state = initialMonitorState();
     state = mergeFrame(state, frame({ seq: 1, trend: [{ scan: 1, time_ms: 10, values: [true] }], hold }));

@@ -138,15 +138,16 @@ describe('the shortcuts dialog', () => {
 });
 
 describe('start page and About texts', () => {
-  it('count the editors (LAD/FBD too), the simulator, monitoring and the lessons as here, Graph as coming', async () => {
+  it('count the editors (LAD/FBD too), the simulator, monitoring, the lessons and S7-Graph as here, the classroom as coming', async () => {
     healthyServer();
     const { user } = renderApp();
     const page = screen.getByTestId('start-page');
     const [now, next] = within(page).getAllByRole('list').slice(0, 2) as [HTMLElement, HTMLElement];
-    for (const feature of ['Projects stored on the server', 'STL and SCL editors', 'LAD and FBD editors', 'CPU simulator', 'Online monitoring', 'Lessons']) {
+    for (const feature of ['Projects stored on the server', 'STL and SCL editors', 'LAD and FBD editors', 'S7-Graph editor', 'CPU simulator', 'Online monitoring', 'Lessons']) {
       expect(within(now).getByText(feature)).toBeTruthy();
     }
-    expect(within(next).getByText('S7-Graph editor')).toBeTruthy();
+    expect(within(next).getByText('Accounts for a classroom')).toBeTruthy();
+    expect(within(next).queryByText('S7-Graph editor')).toBeNull();
     expect(within(next).queryByText('Lessons')).toBeNull();
     expect(within(next).queryByText('CPU simulator')).toBeNull();
     expect(within(next).queryByText('LAD and FBD editors')).toBeNull();
@@ -157,6 +158,7 @@ describe('start page and About texts', () => {
     expect(here.textContent).toContain('Online monitoring');
     expect(here.textContent).toContain('LAD and FBD editors');
     expect(here.textContent).toContain('Lessons: the course in Arabic, Persian and Vietnamese');
-    expect(coming.textContent).toBe('The S7-Graph editor.');
+    expect(here.textContent).toContain('S7-Graph editor: the sequencer chart');
+    expect(coming.textContent).toBe('Accounts for a classroom: teacher and students, and the class\'s progress.');
   });
 });

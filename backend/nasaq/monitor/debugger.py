@@ -7,6 +7,10 @@ instruction reads. The hold runs in the CPU's thread: it waits there for command
 continue, stop) while the scan's Python frames, and with them the block's locals, stay alive.
 The call stack is read from those frames: each instrumented block's code object maps its line
 numbers back to instructions.
+
+S7-Graph (``graph_activation``): a step breakpoint is a breakpoint on the instructions that
+switch the step on; a single step by ``transition`` holds before the next instruction that
+switches any Graph FB's step on, past the rest of the firing it was held in.
 """
 
 from __future__ import annotations
@@ -25,6 +29,7 @@ from nasaq.ir import BlockKind
 from nasaq.monitor import targets
 from nasaq.monitor.block_info import BlockInfo, Slot, read_slot, write_slot
 from nasaq.monitor.errors import MonitorError
+from nasaq.monitor.graph_activation import Activations, activations
 from nasaq.monitor.protocol import HoldState, StackFrame, Variable
 from nasaq.monitor.status import A1, A2, AR1, AR2, BR, CC0, CC1, DI, OS, OV, RLO, STA, status_word
 
@@ -117,6 +122,7 @@ class StepRequest:
     key: Key | None
     line: int | None
     network: int | None
+    skip: tuple[Key, int, int] | None = None  # transition: the firing held in (first, last)
 
 
 @dataclass(slots=True)
@@ -132,6 +138,7 @@ class HoldContext:
     reason: str
     breakpoint: int | None
     depth: int
+    graph_step: int | None = None  # the S7-Graph step this instruction switches on
 
 
 def parse_condition(text: str, session: Session, info: BlockInfo) -> Condition:
@@ -176,6 +183,14 @@ class Debugger:
         self.at: dict[Key, dict[int, list[Breakpoint]]] = {}
         self.step: StepRequest | None = None
         self._next_id = 1
+        self._graph: dict[Key, Activations | None] = {}
+
+    def activations(self, key: Key) -> Activations | None:
+        """The step activations of block ``key`` (None: not an S7-Graph FB), worked out once."""
+        if key not in self._graph:
+            block = self.session.program.get(*key)
+            self._graph[key] = None if block is None else activations(block)
+        return self._graph[key]
 
     @property
     def active(self) -> bool:
@@ -243,19 +258,45 @@ class Debugger:
                 self.step = None
                 session.hold(
                     HoldContext(
-                        compiled, info, index, frame, params, regs, "breakpoint", found.id, depth
+                        compiled,
+                        info,
+                        index,
+                        frame,
+                        params,
+                        regs,
+                        "breakpoint",
+                        found.id,
+                        depth,
+                        self._activated(key, index),
                     )
                 )
                 return
         if self.step is not None and self._step_ends(key, info, index, depth):
             self.step = None
             session.hold(
-                HoldContext(compiled, info, index, frame, params, regs, "step", None, depth)
+                HoldContext(
+                    compiled,
+                    info,
+                    index,
+                    frame,
+                    params,
+                    regs,
+                    "step",
+                    None,
+                    depth,
+                    self._activated(key, index),
+                )
             )
+
+    def _activated(self, key: Key, index: int) -> int | None:
+        found = self.activations(key)
+        return None if found is None else found.at.get(index)
 
     def _step_ends(self, key: Key, info: BlockInfo, index: int, depth: int) -> bool:
         step = self.step
         assert step is not None
+        if step.kind == "transition":
+            return self._next_firing(step, key, index)
         if step.key is None or depth < step.depth:
             return True  # a break-in, or back in the caller
         if depth > step.depth:
@@ -268,7 +309,27 @@ class Debugger:
             return info.networks[index] != step.network
         return info.statement_start[index] and info.lines[index] != step.line
 
+    def _next_firing(self, step: StepRequest, key: Key, index: int) -> bool:
+        """Whether ``index`` switches a step on, outside the firing the step started in."""
+        skip = step.skip
+        if skip is not None:
+            if key == skip[0] and skip[1] <= index <= skip[2]:
+                return False
+            step.skip = None  # the firing is over (a later call of it holds again)
+        found = self.activations(key)
+        return found is not None and index in found.at
+
     def request_step(self, kind: str, into: bool, held: HoldContext | None) -> None:
+        if kind == "transition":
+            skip = None
+            if held is not None:
+                key = (held.compiled.block.kind, held.compiled.block.number)
+                found = self.activations(key)
+                firing = None if found is None else found.firing.get(held.index)
+                if firing is not None:
+                    skip = (key, firing[0], firing[1])
+            self.step = StepRequest(kind, True, 0, None, None, None, skip)
+            return
         if held is None:  # a running CPU: hold at the next instruction anywhere
             self.step = StepRequest(kind, True, 0, None, None, None)
             return
@@ -304,6 +365,8 @@ def hold_state(held: HoldContext, call_stack: list[StackFrame]) -> HoldState:
         registers=registers,
         locals=locals_of(held),
         call_stack=call_stack,
+        graph_step=held.graph_step,
+        graph_block=None if held.graph_step is None else held.info.name,
     )
 
 

@@ -72,6 +72,7 @@ class _Item:
     node: Element | Final
     indices: list[int]
     inside: list[_Item] = field(default_factory=list)  # a parallel's elements, nested ones too
+    prefix: str = ""  # an S7-Graph condition's origin before the element id ("T3/")
 
 
 class ElementStatusBuilder:
@@ -163,9 +164,12 @@ class ElementStatusBuilder:
 class _Walk:
     """The elements of one network in reading order (``text_ids``), with their instructions."""
 
-    def __init__(self, network: int, owned: dict[tuple[int, str], list[int]]) -> None:
+    def __init__(
+        self, network: int, owned: dict[tuple[int, str], list[int]], prefix: str = ""
+    ) -> None:
         self.network = network
         self.owned = owned
+        self.prefix = prefix  # the ids are ``<prefix><element id>`` (S7-Graph: ``T3/e2``)
         self.items: list[_Item] = []
 
     def series(self, series: Series) -> list[_Item]:
@@ -175,7 +179,8 @@ class _Walk:
         return added
 
     def add(self, node: Element | Final) -> list[_Item]:
-        item = _Item(self.network, node, self.owned.get((self.network, node.id), []))
+        key = (self.network, self.prefix + node.id)
+        item = _Item(self.network, node, self.owned.get(key, []), prefix=self.prefix)
         self.items.append(item)
         added = [item]
         if isinstance(node, Parallel):
@@ -256,7 +261,7 @@ class _Reading:
     def made(self, value: Value = None, out: bool | None = None, **pins: Value) -> ElementStatus:
         return ElementStatus(
             network=self.item.network,
-            id=self.item.node.id,
+            id=self.item.prefix + self.item.node.id,
             value=value,
             out=out,
             pins={name: shown for name, shown in pins.items() if shown is not None},

@@ -17,7 +17,7 @@ PROTOCOL_VERSION = 1
 Value = bool | int | float | str | None
 TimeModeName = Literal["virtual", "real", "fast", "pause"]
 CpuMode = Literal["RUN", "STOP", "HOLD"]
-StepKind = Literal["instruction", "statement", "network", "scan"]
+StepKind = Literal["instruction", "statement", "network", "scan", "transition"]
 GraphOp = Literal[
     "auto",
     "man",
@@ -143,7 +143,9 @@ class Unforce(_Message):
 
 class Location(BaseModel):
     """Where a breakpoint goes: a source line (``file`` + ``line``, STL or SCL), or a block with
-    an STL instruction index or a network (1-based), or a block with a line of its source."""
+    an STL instruction index or a network (1-based), or a block with a line of its source; or
+    ``step``, a step number of an S7-Graph FB (``block``, or ``file`` when the file holds one
+    Graph FB): the CPU holds when that step is about to become active, however it is."""
 
     model_config = ConfigDict(extra="forbid")
     file: str | None = None
@@ -151,6 +153,7 @@ class Location(BaseModel):
     line: int | None = Field(default=None, ge=1)
     network: int | None = Field(default=None, ge=1)
     instruction: int | None = Field(default=None, ge=0)
+    step: int | None = Field(default=None, ge=1, le=65535)
 
 
 class SetBreakpoint(_Message):
@@ -176,7 +179,9 @@ class Continue(_Message):
 class Step(_Message):
     """From a hold: to the next STL instruction, SCL statement, network, or the next scan's end.
     ``into`` enters called blocks; without it a step stays in the block (or returns to its caller).
-    From STOP or pause, ``scan`` runs one scan."""
+    From STOP or pause, ``scan`` runs one scan. ``transition``: from a hold or a running (or
+    paused) CPU, runs until a step of any S7-Graph FB is about to become active (one transition
+    fires), then holds there."""
 
     type: Literal["step"]
     by: StepKind
@@ -355,10 +360,16 @@ class ElementStatus(BaseModel):
     POS/NEG box: its result, which the flow passes in series; an EN/ENO box or a call: its ENO;
     a timer, counter or flip-flop box: its Q; a coil, jump or RET: the power flow into it).
     ``pins``: a box's pins by name, inputs as read and outputs as written (a pin whose
-    instructions did not run, as in a box whose EN was 0, is absent)."""
+    instructions did not run, as in a box whose EN was 0, is absent). An S7-Graph FB's conditions
+    report the same way by origin (``T3/e2``, ``S2/C/e1``, ``S2/V/e1``, ``PRE1/e2``), and its
+    action rows as ``S2/A1``: ``value`` the operand as the row left it, ``out`` whether a bit row
+    drove its bit (``PROTOCOL.md``, S7-Graph element status)."""
 
-    network: int
-    id: str = Field(description="The element id in its network (e1, e2 ... in reading order)")
+    network: int = Field(description="1-based network; 0 for an S7-Graph FB's elements")
+    id: str = Field(
+        description="The element id in its network (e1, e2 ... in reading order); in an S7-Graph"
+        " FB the origin: T3/e2, S2/C/e1, S2/V/e1, S2/A1, PRE1/e2, POST1/e1"
+    )
     value: Value = None
     out: bool | None = None
     pins: dict[str, Value] = Field(default_factory=dict)
@@ -465,7 +476,9 @@ class Variable(BaseModel):
 
 
 class HoldState(BaseModel):
-    """Where the CPU holds mid-scan: the innermost block first in ``call_stack``."""
+    """Where the CPU holds mid-scan: the innermost block first in ``call_stack``. At a step
+    activation of an S7-Graph FB (a step breakpoint, a single step by transition):
+    ``graph_step`` is the number of the step about to become active, ``graph_block`` its FB."""
 
     reason: Literal["breakpoint", "step"]
     breakpoint: int | None
@@ -473,6 +486,8 @@ class HoldState(BaseModel):
     registers: dict[str, int]
     locals: list[Variable]
     call_stack: list[StackFrame]
+    graph_step: int | None = None
+    graph_block: str | None = None
 
 
 class DiagnosticEntry(BaseModel):

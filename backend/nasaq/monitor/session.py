@@ -61,6 +61,7 @@ from nasaq.monitor.download import carry_over, compile_download
 from nasaq.monitor.element_status import ElementStatusBuilder
 from nasaq.monitor.errors import MonitorError
 from nasaq.monitor.frames import FrameState
+from nasaq.monitor.graph_elements import GraphElementStatusBuilder, graph_blocks
 from nasaq.monitor.graph_sequencer import Controller, graph_layout, status_of_call
 from nasaq.monitor.lad_blocks import lad_blocks
 from nasaq.monitor.plant_link import PlantLink, no_plant, plant_of
@@ -142,6 +143,7 @@ class Session:
         self.profile = profile
         self.program = compile_download(self.sources)
         self.lad = lad_blocks(self.sources, self.program)
+        self.graphs = graph_blocks(self.sources, self.program)
         # The project's cpu.properties (if any) sets the rest; the API resolved profile and cycle.
         self.properties = properties_of(_pairs(self.sources)).properties
         self.cpu = _cpu(self.program, self.properties, profile, cycle_ms)
@@ -281,6 +283,7 @@ class Session:
             self._abort = ("stop", False)
         self.cpu.stop()
         self._scans_left = 0
+        self.debugger.step = None  # a step still waiting (by transition) ends with the run
 
     def do_restart(self, cold: bool) -> None:
         if self.held is not None:
@@ -361,7 +364,9 @@ class Session:
         info, indices = self._locate(location)
         parsed = parse_condition(condition, self, info) if condition else None
         where = (
-            f"{info.file or info.name} line {location.line}"
+            f"{info.name} step {location.step}"
+            if location.step is not None
+            else f"{info.file or info.name} line {location.line}"
             if location.line is not None
             else f"{info.name} network {location.network}"
             if location.network is not None
@@ -409,8 +414,12 @@ class Session:
         if self.held is not None:
             self._resume = True
             return
+        waiting = self.debugger.step is not None  # a step by transition: now run freely
+        self.debugger.step = None
         if self.cpu.mode == "RUN" and self.time_mode == "pause":
             self.time_mode = self._resume_mode
+            return
+        if waiting:
             return
         raise MonitorError(
             "MON607", action=phrase("act_continue"), reason=phrase("cpu_not_holding")
@@ -419,6 +428,9 @@ class Session:
     def do_step(self, by: StepKind, into: bool) -> None:
         if self.cpu.mode != "RUN":
             raise MonitorError("MON607", action=phrase("act_step"), reason=phrase("cpu_in_stop"))
+        if by == "transition":
+            self._step_by_transition()
+            return
         if by == "scan":
             if self.held is not None:
                 self._pause_after_scan = True
@@ -434,6 +446,18 @@ class Session:
             self._resume = True
         elif self.time_mode == "pause":
             self._scans_left = 1
+
+    def _step_by_transition(self) -> None:
+        """Runs (from a hold, a pause or RUN) until a step of a Graph FB is switched on: the
+        clock runs again if paused, as the next transition may wait for a step's time."""
+        if not any(self.debugger.activations(k) is not None for k in self.program.blocks):
+            raise MonitorError("MON629")
+        self.debugger.request_step("transition", True, self.held)
+        if self.held is not None:
+            self._resume = True
+        if self.time_mode == "pause":
+            self.time_mode = self._resume_mode
+            self._scans_left = 0
 
     def do_run_scans(self, count: int) -> None:
         if self.cpu.mode != "RUN" or self.held is not None:
@@ -466,6 +490,7 @@ class Session:
         self.sources = list(sources)
         self.program = program
         self.lad = lad_blocks(self.sources, program)
+        self.graphs = graph_blocks(self.sources, program)
         self.cpu = cpu
         self.plant = None if plant is None else PlantLink(plant, cpu)  # the process starts again
         self._infos.clear()
@@ -577,6 +602,8 @@ class Session:
         return watch.memory_target(text, self.program, self.cpu)
 
     def _locate(self, location: Location) -> tuple[BlockInfo, list[int]]:
+        if location.step is not None:
+            return self._locate_step(location, location.step)
         if location.block is not None:
             info = self.info(parse_block_name(location.block, self.program))
             if location.line is None and location.network is None and location.instruction is None:
@@ -605,6 +632,43 @@ class Session:
             next_line=min(later) if later else None,
         )
 
+    def _locate_step(self, location: Location, step: int) -> tuple[BlockInfo, list[int]]:
+        """A step breakpoint: the instructions that switch step ``step`` of the Graph FB that
+        ``block`` names, or the one Graph FB compiled from ``file``."""
+        if any(v is not None for v in (location.line, location.network, location.instruction)):
+            raise MonitorError("MON626")
+        if location.block is not None:
+            key = parse_block_name(location.block, self.program)
+            if self.debugger.activations(key) is None:
+                raise MonitorError("MON624", block=self.info(key).name)
+        elif location.file is not None:
+            wanted = _base_name(location.file)
+            keys = [
+                k
+                for k, block in sorted(self.program.blocks.items(), key=lambda i: i[0][1])
+                if k[0] is BlockKind.FB
+                and block.file
+                and _base_name(block.file) == wanted
+                and self.debugger.activations(k) is not None
+            ]
+            if not keys:
+                raise MonitorError("MON627", file=location.file)
+            if len(keys) > 1:
+                names = ", ".join(self.info(k).name for k in keys)
+                raise MonitorError("MON628", file=location.file, blocks=names)
+            key = keys[0]
+        else:
+            raise MonitorError("MON604", where="?", hint=phrase("hint_give_block"))
+        found = self.debugger.activations(key)
+        assert found is not None
+        info = self.info(key)
+        indices = found.of_step(step)
+        if not indices:
+            shown = ", ".join(f"S{n}" for n in list(found.steps)[:24])
+            more = ", ..." if len(found.steps) > 24 else ""
+            raise MonitorError("MON625", block=info.name, step=step, steps=(shown + more) or "-")
+        return info, indices
+
     # -- block information and instrumentation ---------------------------------------------------
     def info(self, key: Key) -> BlockInfo:
         found = self._infos.get(key)
@@ -626,7 +690,14 @@ class Session:
             engine = self.engine
             info = self.info(key)
             drawn = self.lad.get(key)
-            elements = None if drawn is None else ElementStatusBuilder(drawn, info)
+            charted = self.graphs.get(key)
+            elements = (
+                ElementStatusBuilder(drawn, info)
+                if drawn is not None
+                else GraphElementStatusBuilder(charted, info)
+                if charted is not None
+                else None
+            )
             found = self._recorders[key] = Recorder(
                 info, engine.memory, engine.timers, engine.counters, elements
             )

@@ -172,7 +172,9 @@ class Recorder:
         """The status of the held block at the hold: every line's variables as they are now in
         the held scan (read from the live frame as the Locals are, so both show the same
         values), not as the last sampled scan left them; the instruction rows stay the last
-        sample's. TIA Portal also shows an SCL block's current values at a breakpoint."""
+        sample's. TIA Portal also shows an SCL block's current values at a breakpoint. An
+        S7-Graph FB's sequencer is read from the held call's instance as it is now (a step
+        breakpoint: the source steps already left, the step not yet on)."""
         info, by_name = self.info, self.info.by_name
         lines: dict[int, dict[str, Value]] = {}
         for index, name in enumerate(self.names):
@@ -182,6 +184,7 @@ class Recorder:
                 value = read_slot(slot, frame, regs[DI], regs[AR2], params)
                 lines.setdefault(line, {})[slot.name] = value
         last = self.last
+        graph = None if self.graph is None else self.graph(regs)
         return BlockStatus(
             block=info.name,
             language=_LANGUAGES.get(info.language, "stl"),
@@ -189,7 +192,7 @@ class Recorder:
             instructions=[] if last is None else last.instructions,
             lines=[LineStatus(line=k, values=v) for k, v in sorted(lines.items())],
             elements=[] if last is None else last.elements,
-            graph=None if last is None else last.graph,
+            graph=graph if graph is not None or last is None else last.graph,
         )
 
 
@@ -213,7 +216,10 @@ def narrowed(status: BlockStatus, networks: frozenset[int], info: BlockInfo) -> 
         update={
             "instructions": [row for row in status.instructions if owner[row.index] in networks],
             "lines": [row for row in status.lines if row.line in lines],
-            "elements": [row for row in status.elements if row.network in networks],
+            # an S7-Graph FB's elements (network 0) are keyed by chart element, not network
+            "elements": [
+                row for row in status.elements if row.network in networks or not row.network
+            ],
         }
     )
 

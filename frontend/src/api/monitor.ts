@@ -173,13 +173,15 @@ export interface Continue {
 /**
  * From a hold: to the next STL instruction, SCL statement, network, or the next scan's end.
  * `into` enters called blocks; without it a step stays in the block (or returns to its caller).
- * From STOP or pause, `scan` runs one scan.
+ * From STOP or pause, `scan` runs one scan. `transition`: from a hold or a running (or
+ * paused) CPU, runs until a step of any S7-Graph FB is about to become active (one transition
+ * fires), then holds there.
  */
 export interface Step {
   /** Echoed in the ack or error that answers it */
   ref?: number | null;
   type: 'step';
-  by: 'instruction' | 'statement' | 'network' | 'scan';
+  by: 'instruction' | 'statement' | 'network' | 'scan' | 'transition';
   into?: boolean;
 }
 
@@ -241,7 +243,9 @@ export interface GraphControl {
 
 /**
  * Where a breakpoint goes: a source line (`file` + `line`, STL or SCL), or a block with
- * an STL instruction index or a network (1-based), or a block with a line of its source.
+ * an STL instruction index or a network (1-based), or a block with a line of its source; or
+ * `step`, a step number of an S7-Graph FB (`block`, or `file` when the file holds one
+ * Graph FB): the CPU holds when that step is about to become active, however it is.
  */
 export interface Location {
   file?: string | null;
@@ -249,6 +253,7 @@ export interface Location {
   line?: number | null;
   network?: number | null;
   instruction?: number | null;
+  step?: number | null;
 }
 
 export type ServerMessage = Hello | Ack | ProtocolError | Frame;
@@ -336,7 +341,11 @@ export interface TrendSample {
   values: Array<boolean | number | string | null>;
 }
 
-/** Where the CPU holds mid-scan: the innermost block first in `call_stack`. */
+/**
+ * Where the CPU holds mid-scan: the innermost block first in `call_stack`. At a step
+ * activation of an S7-Graph FB (a step breakpoint, a single step by transition):
+ * `graph_step` is the number of the step about to become active, `graph_block` its FB.
+ */
 export interface HoldState {
   reason: 'breakpoint' | 'step';
   breakpoint: number | null;
@@ -344,6 +353,8 @@ export interface HoldState {
   registers: Record<string, number>;
   locals: Variable[];
   call_stack: StackFrame[];
+  graph_step: number | null;
+  graph_block: string | null;
 }
 
 export interface DiagnosticEntry {
@@ -418,11 +429,17 @@ export interface LineStatus {
  * POS/NEG box: its result, which the flow passes in series; an EN/ENO box or a call: its ENO;
  * a timer, counter or flip-flop box: its Q; a coil, jump or RET: the power flow into it).
  * `pins`: a box's pins by name, inputs as read and outputs as written (a pin whose
- * instructions did not run, as in a box whose EN was 0, is absent).
+ * instructions did not run, as in a box whose EN was 0, is absent). An S7-Graph FB's conditions
+ * report the same way by origin (`T3/e2`, `S2/C/e1`, `S2/V/e1`, `PRE1/e2`), and its
+ * action rows as `S2/A1`: `value` the operand as the row left it, `out` whether a bit row
+ * drove its bit (`PROTOCOL.md`, S7-Graph element status).
  */
 export interface ElementStatus {
+  /** 1-based network; 0 for an S7-Graph FB's elements */
   network: number;
-  /** The element id in its network (e1, e2 ... in reading order) */
+  /**
+   * The element id in its network (e1, e2 ... in reading order); in an S7-Graph FB the origin: T3/e2, S2/C/e1, S2/V/e1, S2/A1, PRE1/e2, POST1/e1
+   */
   id: string;
   value: boolean | number | string | null;
   out: boolean | null;

@@ -660,6 +660,7 @@ function sameBreakpoint(a: BreakpointRequest, b: BreakpointRequest): boolean {
     x.block === y.block &&
     x.line === y.line &&
     x.network === y.network &&
-    x.instruction === y.instruction
+    x.instruction === y.instruction &&
+    (x.step ?? null) === (y.step ?? null)
   );
 }

@@ -4,8 +4,8 @@ import { useServerHealth } from '../health/ServerHealth';
 import { Dialog } from '../ui/Dialog';
 import { NasaqMark } from '../ui/icons';
 
-const HERE = ['projects', 'editors', 'diagrams', 'simulator', 'monitoring', 'lessons', 'panels', 'languages'] as const;
-const COMING = ['graphical'] as const;
+const HERE = ['projects', 'editors', 'diagrams', 'graph', 'simulator', 'monitoring', 'lessons', 'panels', 'languages'] as const;
+const COMING = ['classroom'] as const;
 
 interface AboutDialogProps {
   onClose: () => void;

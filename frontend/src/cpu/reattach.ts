@@ -6,15 +6,20 @@
  */
 import type { SessionBreakpoint } from '../api/monitorClient';
 import type { BreakpointStore } from '../editor/monitoring/breakpointStore';
+import { stepBreakpoints, type StepBreakpointStore } from '../graph/stepBreakpoints';
 
 export function adoptSessionBreakpoints(
   store: Pick<BreakpointStore, 'find' | 'put'>,
   projectId: number,
   found: readonly SessionBreakpoint[],
+  steps: Pick<StepBreakpointStore, 'add'> = stepBreakpoints,
 ): void {
   for (const bp of found) {
     const { location, condition } = bp;
-    if (location.block && location.network && bp.file) {
+    if (location.step) {
+      // An S7-Graph step's activation (the Control Sequencer's breakpoint).
+      steps.add({ projectId, block: location.block ?? bp.block, step: location.step });
+    } else if (location.block && location.network && bp.file) {
       if (!store.find(projectId, bp.file, location.network, location.block)) {
         store.put(projectId, bp.file, location.network, { condition, enabled: true }, location.block);
       }

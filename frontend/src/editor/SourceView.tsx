@@ -16,6 +16,7 @@ import { useEditorTabs, type SaveStatus, type SourceTab } from './EditorTabsCont
 import { useOpenProjectFile } from './useOpenProjectFile';
 import { useSourceFile } from './useSourceFile';
 import { LadSourceViews, StlSourceViews, type DiagramView } from '../lad/DiagramViews';
+import { GraphSourceViews, drawsBlock, type GraphView } from '../graph/GraphSourceViews';
 import { XrefEditorActions } from '../xref/XrefEditorActions';
 import './source.css';
 
@@ -50,6 +51,7 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
   const [monitoring, setMonitoring] = useState(() => monitorToggleOf(tab.id));
   const [monitorProblem, setMonitorProblem] = useState<Problem | null>(null);
   const [diagramView, setDiagramView] = useState<DiagramView | null>(null);
+  const [graphView, setGraphView] = useState<GraphView | null>(null);
   const noticeTimer = useRef<ReturnType<typeof setTimeout> | null>(null);
   const file = tab.file;
 
@@ -101,6 +103,8 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
   const codeLanguage = tab.language === 'stl' || tab.language === 'scl' ? tab.language : null;
   const diagramFile = tab.language === 'lad' || tab.language === 'fbd';
   const diagramMonitoring = diagramFile && (diagramView === 'LAD' || diagramView === 'FBD');
+  // An S7-Graph FB is monitored in its drawn views (chart, step, permanent instructions).
+  const graphMonitoring = tab.language === 'graph' && drawsBlock(graphView);
   const renderExtras: RenderEditorExtras | undefined =
     file && codeLanguage
       ? (editor, monaco) => (
@@ -119,7 +123,7 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
           </>
         )
       : file && tab.language === 'graph'
-        ? // An S7-Graph FB as text: cross-references work; its online status is the chart's (next issue).
+        ? // An S7-Graph FB as text: cross-references work; its online status is the chart's.
           (editor, monaco) => <XrefEditorActions editor={editor} monaco={monaco} projectId={file.projectId} onNothing={showNotice} />
         : undefined;
 
@@ -196,6 +200,15 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
           onViewChange={setDiagramView}
           textEditor={codeEditor}
         />
+      ) : tab.language === 'graph' ? (
+        <GraphSourceViews
+          tab={tab}
+          active={active}
+          monitoring={monitoring && active}
+          onMonitorProblem={setMonitorProblem}
+          onViewChange={setGraphView}
+          textEditor={codeEditor}
+        />
       ) : tab.language === 'stl' ? (
         <StlSourceViews tab={tab} active={active} stlEditor={codeEditor} />
       ) : (
@@ -209,7 +222,7 @@ export function SourceView({ tab, active }: { tab: SourceTab; active: boolean })
           <span className="source-status__notice" role="status">
             {notice}
           </span>
-          {codeLanguage || diagramMonitoring ? (
+          {codeLanguage || diagramMonitoring || graphMonitoring ? (
             <MonitorToggle on={monitoring} onChange={toggleMonitoring} projectId={file.projectId} problem={monitorProblem} />
           ) : null}
         </div>

@@ -13,8 +13,8 @@ import { useEditorTabs } from './EditorTabsContext';
 import { createStartSource, type StartLanguage } from './newSource';
 import { ProjectPickDialog } from './ProjectPickDialog';
 
-const WORKS_NOW = ['projects', 'stlScl', 'ladFbd', 'simulator', 'monitoring', 'lessons', 'languages', 'rtl', 'offline'] as const;
-const COMING = ['graph'] as const;
+const WORKS_NOW = ['projects', 'stlScl', 'ladFbd', 'graph', 'simulator', 'monitoring', 'lessons', 'languages', 'rtl', 'offline'] as const;
+const COMING = ['classroom'] as const;
 const STEPS = ['create', 'code', 'download', 'language', 'lessons'] as const;
 
 /** A self-holding motor circuit in STL, as the STL editor shows it. Code stays LTR. */

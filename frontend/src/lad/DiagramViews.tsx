@@ -56,16 +56,21 @@ function ViewBar({ views: choices, view, onView, extra }: { views: readonly Diag
   );
 }
 
-/** Why the diagram cannot be drawn: the file's syntax errors, or the server could not read it. */
-function CannotDraw({ problems, error, onText, onRetry }: { problems: readonly Diagnostic[]; error: ApiError | null; onText: () => void; onRetry: () => void }) {
+/**
+ * Why a diagram cannot be drawn: the file's syntax errors with their lines, or the server could
+ * not read it. Shared by the LAD/FBD views and the S7-Graph chart (`kind` picks the texts'
+ * namespace and the test ids).
+ */
+export function CannotDraw({ kind, problems, error, onText, onRetry }: { kind: 'lad' | 'graph'; problems: readonly Diagnostic[]; error: ApiError | null; onText: () => void; onRetry: () => void }) {
   const { t } = useTranslation();
   const message = useDiagnosticMessage();
   const errorText = useApiErrorText();
   const { dir, language } = useUiLanguage();
+  const texts = kind === 'lad' ? 'lad.cannot' : 'graphChart.cannot';
   return (
-    <div className="cannot-draw" role="alert" dir={dir} lang={language} data-testid="lad-cannot-draw">
-      <h3 className="cannot-draw__title">{error ? t('lad.cannot.serverTitle') : t('lad.cannot.title')}</h3>
-      <p>{error ? t('lad.cannot.serverText') : t('lad.cannot.text')}</p>
+    <div className="cannot-draw" role="alert" dir={dir} lang={language} data-testid={`${kind}-cannot-draw`}>
+      <h3 className="cannot-draw__title">{error ? t(`${texts}.serverTitle`) : t(`${texts}.title`)}</h3>
+      <p>{error ? t(`${texts}.serverText`) : t(`${texts}.text`)}</p>
       {error ? (
         <p>
           <code className="error-code">{error.code}</code> {errorText(error)}
@@ -75,18 +80,18 @@ function CannotDraw({ problems, error, onText, onRetry }: { problems: readonly D
           {problems.slice(0, 20).map((problem, k) => (
             <li key={k}>
               <code className="error-code">{problem.code}</code>{' '}
-              <span dir="ltr">{problem.span?.line ? t('lad.cannot.line', { line: problem.span.line }) : null}</span> {message(problem)}
+              <span dir="ltr">{problem.span?.line ? t(`${texts}.line`, { line: problem.span.line }) : null}</span> {message(problem)}
             </li>
           ))}
         </ul>
       )}
       <div className="cannot-draw__actions">
-        <button type="button" className="button button--primary" data-testid="lad-show-text" onClick={onText}>
-          {t('lad.cannot.showText')}
+        <button type="button" className="button button--primary" data-testid={`${kind}-show-text`} onClick={onText}>
+          {t(`${texts}.showText`)}
         </button>
         {error ? (
           <button type="button" className="button" onClick={onRetry}>
-            {t('lad.cannot.retry')}
+            {t(`${texts}.retry`)}
           </button>
         ) : null}
       </div>
@@ -260,7 +265,7 @@ export function LadSourceViews({ tab, active, monitoring, onMonitorProblem, text
           {stl === null ? (
             <p className="diagram-views__loading">{t('lad.views.converting')}</p>
           ) : stl.error ? (
-            <CannotDraw problems={[]} error={stl.error} onText={() => void choose('text')} onRetry={retryStl} />
+            <CannotDraw kind="lad" problems={[]} error={stl.error} onText={() => void choose('text')} onRetry={retryStl} />
           ) : (
             <>
               {stl.problems.length > 0 ? <StlProblems problems={stl.problems} /> : null}
@@ -297,8 +302,8 @@ function StlProblems({ problems }: { problems: readonly Diagnostic[] }) {
 
 function DiagramOrReason({ doc, onText, children }: { doc: LadDocument; onText: () => void; children: ReactNode }) {
   const { t } = useTranslation();
-  if (doc.state.status === 'unreadable') return <CannotDraw problems={doc.state.problems} error={null} onText={onText} onRetry={doc.retry} />;
-  if (doc.state.status === 'failed' && !doc.blocks) return <CannotDraw problems={[]} error={doc.state.error} onText={onText} onRetry={doc.retry} />;
+  if (doc.state.status === 'unreadable') return <CannotDraw kind="lad" problems={doc.state.problems} error={null} onText={onText} onRetry={doc.retry} />;
+  if (doc.state.status === 'failed' && !doc.blocks) return <CannotDraw kind="lad" problems={[]} error={doc.state.error} onText={onText} onRetry={doc.retry} />;
   if (!doc.blocks) return <p className="diagram-views__loading">{t('lad.views.reading')}</p>;
   return <>{children}</>;
 }

@@ -21,7 +21,7 @@ import { BreakpointDialog } from '../editor/monitoring/BreakpointDialog';
 import { breakpoints, breakpointKey } from '../editor/monitoring/breakpointStore';
 import { RowMenu, type MenuAction } from '../projects/RowMenu';
 import { elementMenu, networkMenu } from './menus';
-import { blockLines, problemsByNetwork } from './problems';
+import { blockLines, problemsByNetwork, type Problems } from './problems';
 import { FieldEditor, type Editing } from './FieldEditor';
 import { useProjectContents } from '../projects/projectContents';
 import { readStored, usePersistentFlag, writeStored } from '../ui/usePersistentState';
@@ -50,7 +50,7 @@ import { isInput, listCompleter, operandCompleter, operandLabel, outlineBlock, s
 import { networkFlows } from './status';
 import { findById, type Selection } from './ladCommands';
 import type { LadDocument } from './useLadDocument';
-import { useLadMonitoring } from './useLadMonitoring';
+import { useLadMonitoring, type LadMonitoring } from './useLadMonitoring';
 import './lad.css';
 
 const BLOCK_ROW_H = 46;
@@ -76,6 +76,12 @@ export interface LadEditorProps {
   onMonitorProblem: (problem: Problem | null) => void;
   /** A place asked for (a diagnostic, a cross-reference, a lesson check): its network is selected. */
   reveal?: RevealRequest | null;
+  /**
+   * Embedded in another editor (S7-Graph's conditions and permanent instructions): no block
+   * header and end rows; `fixedNetworks` also offers no adding of networks. `status` gives the
+   * element states from the host's monitoring instead of the editor opening the block itself.
+   */
+  embedded?: { fixedNetworks: boolean; status: LadMonitoring | null; label: string; problems?: Problems };
 }
 
 interface MenuState {
@@ -96,7 +102,7 @@ function prefixOf(block: number, network: number): string {
   return `${block + 1}-${network + 1}`;
 }
 
-export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, monitoring, onMonitorProblem, reveal = null }: LadEditorProps) {
+export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, monitoring, onMonitorProblem, reveal = null, embedded }: LadEditorProps) {
   const { t, i18n } = useTranslation();
   const { dir, language } = useUiLanguage();
   const blocks: readonly LadBlock[] = doc.blocks ?? [];
@@ -107,7 +113,8 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
   const [editing, setEditing] = useState<Editing | null>(null);
   const [collapsed, setCollapsed] = useState<ReadonlySet<string>>(new Set());
   const [menu, setMenu] = useState<MenuState | null>(null);
-  const [catalogueOpen, setCatalogueOpen] = useState(() => readStored(CATALOGUE_KEY) !== 'false');
+  // Embedded editors (S7-Graph's conditions) are small: their catalogue starts closed.
+  const [catalogueOpen, setCatalogueOpen] = useState(() => !embedded && readStored(CATALOGUE_KEY) !== 'false');
   const [catalogueFocus, setCatalogueFocus] = useState(0);
   const [display, setDisplayState] = useState<OperandDisplay>(storedDisplay);
   const [dragging, setDragging] = useState(false);
@@ -117,6 +124,8 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
   /** The operand whose value the Modify dialog asks for. */
   const [modifying, setModifying] = useState<string | null>(null);
   const wantFocus = useRef(false);
+  /** An element of this editor by its id (several editors can be on a page: S7-Graph's step view). */
+  const byId = useCallback((id: string) => root.current?.querySelector<HTMLElement>(`[id="${id}"]`) ?? null, []);
   const message = useDiagnosticMessage();
   const { command } = useSession();
 
@@ -126,7 +135,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
   };
   const toggleCatalogue = (open: boolean) => {
     setCatalogueOpen(open);
-    writeStored(CATALOGUE_KEY, String(open));
+    if (!embedded) writeStored(CATALOGUE_KEY, String(open));
   };
 
   // -- the project: outline (symbols, members, blocks to call) and diagnostics ------------------
@@ -148,12 +157,12 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
   const rows = useMemo(() => {
     const out: Row[] = [];
     blocks.forEach((block, b) => {
-      out.push({ kind: 'block', block: b });
+      if (!embedded) out.push({ kind: 'block', block: b });
       block.networks.forEach((_, n) => out.push({ kind: 'network', block: b, network: n }));
-      out.push({ kind: 'end', block: b });
+      if (!embedded?.fixedNetworks) out.push({ kind: 'end', block: b });
     });
     return out;
-  }, [blocks]);
+  }, [blocks, embedded]);
   const rowOf = useCallback((b: number, n: number) => rows.findIndex((row) => row.kind === 'network' && row.block === b && row.network === n), [rows]);
 
   // FBD heights are known once elkjs has laid a network out: the list is measured again then.
@@ -200,8 +209,8 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
   }, [visible, rows, blocks.length]);
   const shownBlock = shown.block === null ? null : (blocks[shown.block] ?? null);
   const resolved = shownBlock ? outlineBlock(outline, shownBlock.name) : null;
-  const monitor = useLadMonitoring({
-    enabled: monitoring && active && projectId !== null && file !== null,
+  const ownMonitor = useLadMonitoring({
+    enabled: !embedded && monitoring && active && projectId !== null && file !== null,
     projectId: projectId ?? -1,
     file: file ?? '',
     block: shownBlock?.name ?? null,
@@ -209,6 +218,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
     resolvedName: resolved ? `${resolved.kind}${resolved.number}` : null,
     onProblem: onMonitorProblem,
   });
+  const monitor = embedded ? (embedded.status ?? OFFLINE) : ownMonitor;
   const forcedList = useMonitor((state) => state.cpu?.forced ?? null);
   const forced = useMemo(() => {
     if (!monitor.online || !forcedList || forcedList.length === 0) return undefined;
@@ -234,7 +244,8 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
 
   // -- diagnostics on elements and networks ------------------------------------------------------
   const blockStarts = useMemo(() => blockLines(text), [text]);
-  const problems = useMemo(() => problemsByNetwork(contents?.diagnostics ?? [], file, blockStarts, message), [contents?.diagnostics, file, blockStarts, message]);
+  const ownProblems = useMemo(() => problemsByNetwork(contents?.diagnostics ?? [], file, blockStarts, message), [contents?.diagnostics, file, blockStarts, message]);
+  const problems = embedded?.problems ?? ownProblems;
 
   // -- breakpoints --------------------------------------------------------------------------------
   const breakpointList = useSyncExternalStore(breakpoints.subscribe, breakpoints.list, breakpoints.list);
@@ -304,7 +315,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
     requestAnimationFrame(() => {
       // A field opened meanwhile (a double click right after a click) keeps the focus.
       if (document.activeElement?.closest('.operand-editor, .network__field')) return;
-      const element = document.getElementById(target) as (HTMLElement & SVGElement) | null;
+      const element = byId(target) as (HTMLElement & SVGElement) | null;
       element?.focus({ preventScroll: true });
       if (!element) root.current?.querySelector<HTMLElement>('.lad-editor__list')?.focus();
     });
@@ -533,7 +544,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
         },
       });
       if (actions.length === 0) return;
-      const anchor = document.getElementById(`lad-${prefixOf(b, n)}-${id}`) ?? (event.target as Element);
+      const anchor = byId(`lad-${prefixOf(b, n)}-${id}`) ?? (event.target as Element);
       setMenu({ anchor, label: t('lad.menu.element'), actions });
     },
     [blocks, editable, t, editSelected, apply, monitor.online, command, symbols, outline],
@@ -558,7 +569,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
           remove: () => apply((all) => commands.deleteNetwork(all, at), t('lad.undo.deleteNetwork')),
         },
       });
-      const anchor = document.getElementById(`${prefixOf(b, n)}-header`) ?? (event.target as Element);
+      const anchor = byId(`${prefixOf(b, n)}-header`) ?? (event.target as Element);
       setMenu({ anchor, label: t('lad.menu.network'), actions });
     },
     [blocks, editable, t, addNetwork, apply, clipboardAction, projectId, file, toggleBreakpoint],
@@ -768,7 +779,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
         canRedo={doc.canRedo}
         onUndo={doc.undo}
         onRedo={doc.redo}
-        onAddNetwork={addNetwork}
+        {...(embedded?.fixedNetworks ? {} : { onAddNetwork: addNetwork })}
         favourites={favourites}
         emptyBox={emptyBoxItem}
         onInsert={insert}
@@ -792,7 +803,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
             renderItem={renderRow}
             onVisibleChange={onVisibleChange}
             layoutKey={blocks}
-            label={t('lad.list.label')}
+            label={embedded?.label ?? t('lad.list.label')}
             testId="lad-networks"
           />
         </div>
@@ -840,6 +851,7 @@ export function LadEditor({ doc, text, projectId, file, mode, active, readOnly, 
   );
 }
 
+const OFFLINE: LadMonitoring = { online: false, statesOf: () => undefined, heldNetwork: null };
 const EMPTY_PROBLEMS: ReadonlyMap<string, readonly RungProblem[]> = new Map();
 const EMPTY_LIST: readonly RungProblem[] = [];
 

@@ -18,7 +18,8 @@ export interface LadToolbarProps {
   canRedo: boolean;
   onUndo: () => void;
   onRedo: () => void;
-  onAddNetwork: () => void;
+  /** Absent: the networks are given (S7-Graph's conditions), none can be added. */
+  onAddNetwork?: () => void;
   favourites: readonly CatalogueItem[];
   emptyBox: CatalogueItem;
   onInsert: (item: CatalogueItem) => void;
@@ -49,10 +50,14 @@ export function LadToolbar(props: LadToolbarProps) {
         {t('lad.toolbar.redo')}
       </button>
       <span className="lad-toolbar__sep" />
-      <button type="button" className="lad-tool" disabled={!editable} onClick={props.onAddNetwork} data-testid="lad-insert-network" aria-keyshortcuts="Control+R" title={`${t('lad.toolbar.addNetwork')} (Ctrl+R)`}>
-        {t('lad.toolbar.addNetwork')}
-      </button>
-      <span className="lad-toolbar__sep" />
+      {props.onAddNetwork ? (
+        <>
+          <button type="button" className="lad-tool" disabled={!editable} onClick={props.onAddNetwork} data-testid="lad-insert-network" aria-keyshortcuts="Control+R" title={`${t('lad.toolbar.addNetwork')} (Ctrl+R)`}>
+            {t('lad.toolbar.addNetwork')}
+          </button>
+          <span className="lad-toolbar__sep" />
+        </>
+      ) : null}
       <Favourites
         items={props.favourites}
         disabled={!editable}

@@ -25,16 +25,20 @@ export interface OperandEditorProps {
   onCommit: (text: string) => void;
   onCancel: () => void;
   style?: React.CSSProperties;
+  /** False: a field that stays in place (a table cell): no focus on mount, suggestions while focused. */
+  autoFocus?: boolean;
+  /** A problem of the value the field holds (marked on the input, shown as its title). */
+  problem?: string | null;
 }
 
 const MAX_OPTIONS = 50;
 
-export function OperandEditor({ initial, label, complete, validate, onCommit, onCancel, style }: OperandEditorProps) {
+export function OperandEditor({ initial, label, complete, validate, onCommit, onCancel, style, autoFocus = true, problem = null }: OperandEditorProps) {
   const { t } = useTranslation();
   const [text, setText] = useState(initial);
   const [active, setActive] = useState(0);
   const [error, setError] = useState<string | null>(null);
-  const [open, setOpen] = useState(true);
+  const [open, setOpen] = useState(autoFocus);
   /** The user moved in the list: Enter takes the highlighted completion, else the typed text. */
   const [navigated, setNavigated] = useState(false);
   const input = useRef<HTMLInputElement>(null);
@@ -42,9 +46,10 @@ export function OperandEditor({ initial, label, complete, validate, onCommit, on
   const done = useRef(false);
 
   useEffect(() => {
+    if (!autoFocus) return;
     input.current?.focus();
     input.current?.select();
-  }, []);
+  }, [autoFocus]);
 
   const found = useMemo(() => {
     const result = complete(text);
@@ -105,7 +110,8 @@ export function OperandEditor({ initial, label, complete, validate, onCommit, on
         aria-controls={listId}
         aria-autocomplete="list"
         aria-activedescendant={options.length > 0 ? `${listId}-${shown}` : undefined}
-        aria-invalid={error ? true : undefined}
+        aria-invalid={error || problem ? true : undefined}
+        title={problem ?? undefined}
         spellCheck={false}
         autoComplete="off"
         value={text}
@@ -118,7 +124,11 @@ export function OperandEditor({ initial, label, complete, validate, onCommit, on
           setError(null);
         }}
         onKeyDown={onKeyDown}
+        onFocus={() => {
+          if (!autoFocus) setOpen(true);
+        }}
         onBlur={() => {
+          if (!autoFocus) setOpen(false);
           if (!done.current) commit(text);
         }}
       />

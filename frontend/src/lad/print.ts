@@ -31,16 +31,16 @@ const LEADING_SPACE = new RegExp(`^[${PYTHON_SPACE}]+`, 'u');
 const TRAILING_SPACE = new RegExp(`[${PYTHON_SPACE}]+$`, 'u');
 
 /** Python's `str.rstrip()`: the whitespace Python knows, not JavaScript's `trimEnd` set. */
-function rstrip(text: string): string {
+export function rstrip(text: string): string {
   return text.replace(TRAILING_SPACE, '');
 }
 
-function strip(text: string): string {
+export function strip(text: string): string {
   return rstrip(text).replace(LEADING_SPACE, '');
 }
 
 /** A title written on one line: its lines joined by spaces. */
-function oneLine(text: string): string {
+export function oneLine(text: string): string {
   return strip(text.split('\n').join(' '));
 }
 
@@ -250,4 +250,21 @@ export function printLad(blocks: readonly LadBlock[]): string {
       return `${printer.out.join('\n')}\n`;
     })
     .join('\n');
+}
+
+/** The lines of one network (the Graph format's permanent instructions are LAD networks). */
+export function networkLines(network: Network): string[] {
+  const printer = new Printer();
+  printer.network(network);
+  return printer.out;
+}
+
+/**
+ * The elements of `series` one per line at `depth`, ids numbered from `e1` as in a rung without
+ * its final element (the Graph format's conditions).
+ */
+export function seriesLines(series: Series, depth: number): string[] {
+  const printer = new Printer();
+  for (const element of series.elements) printer.element(element, depth);
+  return printer.out;
 }

@@ -13,4 +13,6 @@ export default defineConfig({
   // Generating, opening and scrolling two large sources takes a while on a small machine.
   timeout: 600_000,
   reporter: [['list']],
+  // A trace records DOM snapshots as the page changes: it would be measured with the editor.
+  use: { ...base.use, trace: 'off' },
 });

@@ -57,13 +57,15 @@ def _labels_taken(block: GraphBlock) -> list[str]:
 
 def place_key(element: str | None, places: dict[str, int]) -> str:
     """The ``ParsedGraph.places`` key of an origin element: itself (``S2/A1``), else its
-    part before the element id (``T3`` of ``T3/e4``), else the block."""
+    part before the element id (``S2/C`` of ``S2/C/e1``, ``T3`` of ``T3/e4``), else the block."""
     if element is None:
         return "BLOCK"
-    if element in places:
-        return element
-    head = element.split("/", 1)[0]
-    return head if head in places else "BLOCK"
+    while True:
+        if element in places:
+            return element
+        if "/" not in element:
+            return "BLOCK"
+        element = element.rsplit("/", 1)[0]
 
 
 def _networks(out: Emitter, conditions: Conditions, networks: list[Network], kind: str) -> None:

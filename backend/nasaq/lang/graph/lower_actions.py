@@ -106,7 +106,7 @@ class Actions:
             return False
         out = self.out
         out.at(f"S{step.number}/C")
-        self.conditions.chain(step.interlock, f"S{step.number}/C", False)
+        self.conditions.chain(step.interlock, f"S{step.number}/C")
         out.emit("ON", "#G7_ILEN")
         out.emit("=", "#G7_OK")
         out.emit("AN", "#G7_OK")

@@ -24,6 +24,7 @@ from nasaq.lang.lad.model import (
     Series,
 )
 from nasaq.lang.lad.to_stl import NetworkLowering, network_to_stl
+from nasaq.lang.lad.to_stl_unfilled import without_unfilled
 
 
 class Resolver:
@@ -81,14 +82,21 @@ class Conditions:
         self.out = out
         self.resolver = Resolver(chart)
 
-    def chain(self, series: Series | None, origin: str, per_element: bool) -> bool:
+    def chain(self, series: Series | None, origin: str) -> bool:
         """The condition's chain; False (nothing emitted) when it is absent or empty (TRUE).
-        ``per_element``: lines go to ``<origin>/<element id>`` (transitions), else ``origin``."""
+        Its lines go to ``<origin>/<element id>`` (``T3/e2``, ``S2/C/e1``, ``S2/V/e1``), so
+        monitoring draws each element's power flow; a bracket of no element to ``origin``."""
         if series is None or not series.elements:
             return False
-        resolved = self.resolver.series(series)
         lowering = NetworkLowering(self.out.labels)
-        elements = resolved.elements
+        # An operand not filled in yet (``<???>``, as the editor draws a new element) is
+        # reported (LAD212, an error) and its element left out, as LAD does, rather than
+        # reaching the STL compiler as a syntax error on a line the user never wrote.
+        filled = without_unfilled(Network(logic=series), lowering.report).logic
+        elements = self.resolver.series(filled).elements
+        if not elements:
+            self._take([], [], origin)
+            return False
         wrap = len(elements) == 1 and isinstance(elements[0], Parallel)
         if wrap:  # "O a; O b" would not take a following "A": bracket it
             lowering.emit("A(")
@@ -96,25 +104,21 @@ class Conditions:
         if wrap:
             lowering.owner = None
             lowering.emit(")")
-        self._take(lowering.lines, lowering.elements, origin, per_element)
+        self._take(lowering.lines, lowering.elements, origin)
         return True
 
     def network(self, network: Network, origin: str) -> None:
         """A permanent network, its lines owned by ``<origin>/<element id>``."""
         lines, elements = network_to_stl(self.resolver.network(network), self.out.labels)
-        self._take(lines, elements, origin, True)
+        self._take(lines, elements, origin)
 
-    def _take(
-        self, lines: list[str], elements: list[str | None], origin: str, per_element: bool
-    ) -> None:
-        owners = [
-            f"{origin}/{element}" if per_element and element else origin for element in elements
-        ]
+    def _take(self, lines: list[str], elements: list[str | None], origin: str) -> None:
+        owners = [f"{origin}/{element}" if element else origin for element in elements]
         self.out.extend(lines, owners)
         labels = self.out.labels
         for problem in labels.diagnostics:  # LAD's problems, placed on the Graph element
             span = problem.span or Span()
             element = span.element
-            where = f"{origin}/{element}" if per_element and element else origin
+            where = f"{origin}/{element}" if element else origin
             self.out.diagnostics.append(problem.model_copy(update={"span": Span(element=where)}))
         labels.diagnostics.clear()

@@ -171,7 +171,7 @@ class Machinery:
             out.emit("A", m(step, "X"))
             out.emit("AN", m(step, "S1"))
             out.emit("JCN", skip)
-            self.conditions.chain(step.supervision, origin, False)
+            self.conditions.chain(step.supervision, origin)
             out.emit("A", "#G7_SVEN")
             out.emit("=", "#G7_ERR")
             out.emit("A", "#G7_ERR")
@@ -243,7 +243,7 @@ class Machinery:
             out.emit("A", f"#G7_J{step.number}")
             out.emit("AN", flags[step.number])
             out.emit("JCN", other)
-            if self.conditions.chain(transition.condition, origin, True):
+            if self.conditions.chain(transition.condition, origin):
                 out.at(origin)
                 out.emit("JCN", other)
             out.emit("SET")
@@ -274,7 +274,7 @@ class Machinery:
             out.emit("A", m(step, "X"))
             out.emit("AN", m(step, "S1"))
         out.emit("JCN", done)
-        self.conditions.chain(transition.condition, origin, True)
+        self.conditions.chain(transition.condition, origin)
         out.at(origin)
         out.emit("=", m(transition, "TT"))
         out.emit("A", m(transition, "TT"))

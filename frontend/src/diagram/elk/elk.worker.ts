@@ -1,8 +1,11 @@
 /**
  * The diagram layer's one layout worker: graphs in, positioned graphs out, so a large FBD network
  * or sequencer never blocks the editor. Layouts run one after another, each answer carrying how
- * long its own layout took; a first small layout at start warms elkjs up (its first run compiles
- * and initialises much of its code), so a user's first network does not pay for that.
+ * long its own layout took. elkjs runs several times slower until V8 has compiled its code, so
+ * the worker warms it up: a few small networks at start, and whatever shapes the editors send as
+ * warm-up (`warmUpLayout`, e.g. the chart's sequencer when a page may soon show one). Warm-up runs
+ * one small layout at a time and only while no real request waits, so a user's layout never
+ * queues behind more than one warm-up piece.
  */
 import type { ElkNode } from 'elkjs/lib/elk-api';
 import { LAYERED_OPTIONS, NODE_OPTIONS } from './options';
@@ -11,6 +14,8 @@ import { newElk } from './runLayout';
 interface Request {
   id: number;
   graph: ElkNode;
+  /** A warm-up: lay the graph out this many times when idle, answer nothing. */
+  warm?: number;
 }
 
 // Made before the handler is set: making it installs elkjs's own handler (see `newElk`).
@@ -44,9 +49,9 @@ function warmUp(): ElkNode {
   return { id: 'warm-up', layoutOptions: LAYERED_OPTIONS, children, edges };
 }
 
-let queue: Promise<unknown> = (async () => {
-  for (let k = 0; k < 3; k += 1) await elk.layout(warmUp()).catch(() => undefined);
-})();
+const requests: Request[] = [];
+const warming: ElkNode[] = [warmUp(), warmUp(), warmUp()];
+let pumping = false;
 
 async function answer({ id, graph }: Request): Promise<void> {
   const started = performance.now();
@@ -58,6 +63,27 @@ async function answer({ id, graph }: Request): Promise<void> {
   }
 }
 
+/** Real requests first, in order; a warm-up piece only when none waits; messages get in between. */
+async function pump(): Promise<void> {
+  if (pumping) return;
+  pumping = true;
+  for (;;) {
+    const request = requests.shift();
+    if (request) await answer(request);
+    else {
+      const graph = warming.shift();
+      if (!graph) break;
+      await elk.layout(graph).catch(() => undefined);
+    }
+    await new Promise((resolve) => setTimeout(resolve, 0));
+  }
+  pumping = false;
+}
+
 self.onmessage = (event: MessageEvent<Request>) => {
-  queue = queue.then(() => answer(event.data));
+  const { graph, warm } = event.data;
+  if (warm === undefined) requests.push(event.data);
+  else for (let k = 0; k < Math.min(warm, 20); k += 1) warming.push(structuredClone(graph));
+  void pump();
 };
+void pump();

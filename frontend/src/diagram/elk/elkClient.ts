@@ -41,6 +41,15 @@ function theWorker(): Worker | null {
   return worker;
 }
 
+/**
+ * Has the worker lay `graph` out `times` times while it is idle, so that elkjs's code for graphs
+ * of that shape is compiled before a user waits for one (a cold elkjs is several times slower).
+ * Starts the worker; nothing where there is none.
+ */
+export function warmUpLayout(graph: ElkNode, times: number): void {
+  theWorker()?.postMessage({ id: 0, graph, warm: times });
+}
+
 /** The laid-out graph (positions, edge routes); one request per distinct graph. */
 export function layoutGraph(graph: ElkNode): Promise<ElkNode> {
   const key = JSON.stringify(graph);

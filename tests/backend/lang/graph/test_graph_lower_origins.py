@@ -110,3 +110,16 @@ def test_a_block_with_a_checker_error_is_not_lowered() -> None:
     lowered = lower_file("seq.graph", text)
     assert any(d.severity == "error" and d.code.startswith("GRA2") for d in lowered.diagnostics)
     assert lowered.stl == ""
+
+
+def test_an_operand_not_filled_in_yet_is_lad212_on_its_transition_not_a_syntax_error() -> None:
+    """The LAD editor draws a new compare box as ``<???>`` pins while the student types."""
+    text = SOURCE.format(extra="").replace(
+        "CONDITION Contact(I 0.3) END_CONDITION",
+        "CONDITION Contact(I 0.3) Box(CMP>=D, IN1 := <???>, IN2 := MD 4) END_CONDITION",
+    )
+    result = compiled(text)
+    errors = [d for d in result.diagnostics if d.severity == "error"]
+    assert [d.code for d in errors] == ["LAD212"]
+    assert errors[0].span is not None
+    assert errors[0].span.line == line_of(text, "TRANSITION Back")
