@@ -50,18 +50,16 @@ let warmedUp = false;
 const WARM_UP_LAYOUTS = 8;
 
 /**
- * The layout worker started and warmed up on a chart's shape: loading elkjs and its first
- * layouts take longer than a large chart's own layout, so this happens when the page is idle
- * after loading (or at the latest when a `.graph` tab opens), not when a chart is first wanted.
+ * The layout worker started and warmed up on a chart's shape as soon as a `.graph` tab opens,
+ * while its file is fetched and read: loading elkjs and its first layouts take longer than a
+ * large chart's own layout. Not at page load: a page that never shows a diagram does not load
+ * elkjs at all (a classroom's network), and the worker answers a real request before each
+ * further warm-up piece.
  */
 function warmUpLayout(): void {
   if (warmedUp || typeof Worker === 'undefined') return;
   warmedUp = true;
   warmUpElk(sequencerGraph(warmUpSequencer()), WARM_UP_LAYOUTS);
-}
-
-if (typeof window !== 'undefined' && typeof window.requestIdleCallback === 'function' && typeof Worker !== 'undefined') {
-  window.requestIdleCallback(warmUpLayout, { timeout: 10_000 });
 }
 
 /** Whether a view draws the block (and so monitors it online). */

@@ -381,9 +381,15 @@ def test_the_trend_csv_holds_each_clients_own_samples(live: LiveServer, created:
         assert level == "5"
         assert flag == "True"
 
-    # The CSV exists while its client is connected.
-    gone = live.http.get(f"/api/sessions/{session_id}/trend.csv", params={"client": one.client_id})
-    assert gone.status_code == 404
+    # The CSV exists while its client is connected: once the server has seen the socket close
+    # (it may answer one request more before it has), the client's samples are gone.
+    url = f"/api/sessions/{session_id}/trend.csv"
+
+    def closed() -> httpx2.Response | None:
+        response = live.http.get(url, params={"client": one.client_id})
+        return response if response.status_code == 404 else None
+
+    gone = wait_for(closed, "the closed client's trend to go")
     assert _error(gone)["code"] == "MON603"
 
 
