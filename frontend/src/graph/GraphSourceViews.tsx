@@ -13,8 +13,6 @@ import { useTranslation } from 'react-i18next';
 import type { Problem } from '../api/monitorClient';
 import { useEditorTabs, type SourceTab } from '../editor/EditorTabsContext';
 import { useUiLanguage } from '../i18n/useDocumentLanguage';
-import { warmUpLayout as warmUpElk } from '../diagram/elk/elkClient';
-import { sequencerGraph, warmUpSequencer } from './chartGraph';
 import { ControlSequencer } from './ControlSequencer';
 import { GeneratedView } from './GeneratedView';
 import { GraphChart } from './GraphChart';
@@ -25,6 +23,7 @@ import type { GraphSelection } from './selection';
 import { SettingsDialog } from './SettingsDialog';
 import { useGraphDocument, type GraphDocument } from './useGraphDocument';
 import { useGraphMonitoring } from './useGraphMonitoring';
+import { warmUpCharts } from './warmUp';
 import { CannotDraw } from '../lad/DiagramViews';
 import '../lad/lad.css';
 
@@ -43,23 +42,6 @@ export interface GraphSourceViewsProps {
   /** The file's text editor (Monaco with the file's markers), shown in the text view. */
   textEditor: ReactNode;
   onViewChange?: (view: GraphView) => void;
-}
-
-let warmedUp = false;
-/** Layouts of the warm-up chart: enough for V8 to compile elkjs's code for charts (measured in node: the fourth is ~3× faster than the first). */
-const WARM_UP_LAYOUTS = 8;
-
-/**
- * The layout worker started and warmed up on a chart's shape as soon as a `.graph` tab opens,
- * while its file is fetched and read: loading elkjs and its first layouts take longer than a
- * large chart's own layout. Not at page load: a page that never shows a diagram does not load
- * elkjs at all (a classroom's network), and the worker answers a real request before each
- * further warm-up piece.
- */
-function warmUpLayout(): void {
-  if (warmedUp || typeof Worker === 'undefined') return;
-  warmedUp = true;
-  warmUpElk(sequencerGraph(warmUpSequencer()), WARM_UP_LAYOUTS);
 }
 
 /** Whether a view draws the block (and so monitors it online). */
@@ -96,7 +78,7 @@ function DrawnOrReason({ doc, onText, children }: { doc: GraphDocument; onText: 
 export function GraphSourceViews({ tab, active, monitoring, onMonitorProblem, textEditor, onViewChange }: GraphSourceViewsProps) {
   const { t } = useTranslation();
   const { updateSource } = useEditorTabs();
-  useEffect(warmUpLayout, []);
+  useEffect(warmUpCharts, []);
   const [view, setView] = useState<GraphView>(() => remembered.get(tab.id)?.view ?? 'chart');
   const [selection, setSelection] = useState<GraphSelection>(() => remembered.get(tab.id)?.selection ?? { block: 0, sequencer: 0, item: null });
   const [textShown, setTextShown] = useState(view === 'text');

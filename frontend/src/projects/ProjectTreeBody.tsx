@@ -1,5 +1,6 @@
-import { useCallback, useId, useMemo, useState, type KeyboardEvent } from 'react';
+import { useCallback, useEffect, useId, useMemo, useState, type KeyboardEvent } from 'react';
 import { useTranslation } from 'react-i18next';
+import { warmUpCharts } from '../graph/warmUp';
 import { useApiErrorText } from '../i18n/useApiErrorText';
 import { PlusIcon, RefreshIcon, WarningIcon } from '../ui/icons';
 import { RowMenu, type MenuAction } from './RowMenu';
@@ -46,6 +47,11 @@ export function ProjectTreeBody({ state, rows, labelledBy, selected, actions, on
   const [menu, setMenu] = useState<{ row: TreeRow; anchor: HTMLElement } | null>(null);
 
   const byKey = useMemo(() => new Map(rows.map((row) => [row.key, row])), [rows]);
+  // A listed S7-Graph source is likely to be opened: the chart's layout worker gets ready now.
+  const listsChart = rows.some((row) => row.type === 'file' && row.file.name.toLowerCase().endsWith('.graph'));
+  useEffect(() => {
+    if (listsChart) warmUpCharts();
+  }, [listsChart]);
   const visibleKeys = useMemo(() => rows.map((row) => row.key), [rows]);
 
   const keyboardActions = useMemo(
