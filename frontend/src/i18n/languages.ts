@@ -76,6 +76,35 @@ import graphDocAr from '../graph/locales-doc/ar.json';
 import graphDocFa from '../graph/locales-doc/fa.json';
 import graphDocVi from '../graph/locales-doc/vi.json';
 
+import problemsLimitsEn from '../problems/locales-limits/en.json';
+import problemsLimitsAr from '../problems/locales-limits/ar.json';
+import problemsLimitsFa from '../problems/locales-limits/fa.json';
+import problemsLimitsVi from '../problems/locales-limits/vi.json';
+import problemsProfileEn from '../problems/locales-profile/en.json';
+import problemsProfileAr from '../problems/locales-profile/ar.json';
+import problemsProfileFa from '../problems/locales-profile/fa.json';
+import problemsProfileVi from '../problems/locales-profile/vi.json';
+import problemsTiafilesEn from '../problems/locales-tiafiles/en.json';
+import problemsTiafilesAr from '../problems/locales-tiafiles/ar.json';
+import problemsTiafilesFa from '../problems/locales-tiafiles/fa.json';
+import problemsTiafilesVi from '../problems/locales-tiafiles/vi.json';
+import problemsFormsEn from '../problems/locales-forms/en.json';
+import problemsFormsAr from '../problems/locales-forms/ar.json';
+import problemsFormsFa from '../problems/locales-forms/fa.json';
+import problemsFormsVi from '../problems/locales-forms/vi.json';
+import problemsFunctionsEn from '../problems/locales-functions/en.json';
+import problemsFunctionsAr from '../problems/locales-functions/ar.json';
+import problemsFunctionsFa from '../problems/locales-functions/fa.json';
+import problemsFunctionsVi from '../problems/locales-functions/vi.json';
+import problemsDefectsEn from '../problems/locales-defects/en.json';
+import problemsDefectsAr from '../problems/locales-defects/ar.json';
+import problemsDefectsFa from '../problems/locales-defects/fa.json';
+import problemsDefectsVi from '../problems/locales-defects/vi.json';
+import problemsStlexportEn from '../problems/locales-stlexport/en.json';
+import problemsStlexportAr from '../problems/locales-stlexport/ar.json';
+import problemsStlexportFa from '../problems/locales-stlexport/fa.json';
+import problemsStlexportVi from '../problems/locales-stlexport/vi.json';
+
 /** The interface languages, in the order the language switch lists them. */
 export const LANGUAGES = ['en', 'ar', 'fa', 'vi'] as const;
 export type Language = (typeof LANGUAGES)[number];
@@ -91,10 +120,10 @@ export const LANGUAGE_STORAGE_KEY = 'nasaq.lang';
  * its own top-level namespace and may add `problems.<key>` texts for the diagnostic codes it owns.
  */
 const FEATURES = {
-  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn, phrasesEn, examplesEn, lessonPaneEn, plantsEn, graphChecksEn, graphSyntaxEn, graphRunEn, graphChartEn, graphStepEn, graphControlEn, graphDocEn],
-  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr, phrasesAr, examplesAr, lessonPaneAr, plantsAr, graphChecksAr, graphSyntaxAr, graphRunAr, graphChartAr, graphStepAr, graphControlAr, graphDocAr],
-  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa, phrasesFa, examplesFa, lessonPaneFa, plantsFa, graphChecksFa, graphSyntaxFa, graphRunFa, graphChartFa, graphStepFa, graphControlFa, graphDocFa],
-  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi, phrasesVi, examplesVi, lessonPaneVi, plantsVi, graphChecksVi, graphSyntaxVi, graphRunVi, graphChartVi, graphStepVi, graphControlVi, graphDocVi],
+  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn, phrasesEn, examplesEn, lessonPaneEn, plantsEn, graphChecksEn, graphSyntaxEn, graphRunEn, graphChartEn, graphStepEn, graphControlEn, graphDocEn, problemsLimitsEn, problemsProfileEn, problemsTiafilesEn, problemsFormsEn, problemsFunctionsEn, problemsDefectsEn, problemsStlexportEn],
+  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr, phrasesAr, examplesAr, lessonPaneAr, plantsAr, graphChecksAr, graphSyntaxAr, graphRunAr, graphChartAr, graphStepAr, graphControlAr, graphDocAr, problemsLimitsAr, problemsProfileAr, problemsTiafilesAr, problemsFormsAr, problemsFunctionsAr, problemsDefectsAr, problemsStlexportAr],
+  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa, phrasesFa, examplesFa, lessonPaneFa, plantsFa, graphChecksFa, graphSyntaxFa, graphRunFa, graphChartFa, graphStepFa, graphControlFa, graphDocFa, problemsLimitsFa, problemsProfileFa, problemsTiafilesFa, problemsFormsFa, problemsFunctionsFa, problemsDefectsFa, problemsStlexportFa],
+  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi, phrasesVi, examplesVi, lessonPaneVi, plantsVi, graphChecksVi, graphSyntaxVi, graphRunVi, graphChartVi, graphStepVi, graphControlVi, graphDocVi, problemsLimitsVi, problemsProfileVi, problemsTiafilesVi, problemsFormsVi, problemsFunctionsVi, problemsDefectsVi, problemsStlexportVi],
 } as const;
 
 export type Catalogue = typeof en & { lad: typeof ladEn } & typeof cpuEn &

@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 from nasaq.diagnostics import Diagnostic
 from nasaq.ir import BlockKind
 from nasaq.lang.layout import Expansion, Layout, RecursiveTypeError, Slot
+from nasaq.lang.profiles import DEFAULT_PROFILE
 from nasaq.lang.scl import ast
 from nasaq.lang.stl.addresses import AddressError, parse_address
 from nasaq.lang.stl.diag import problem
@@ -109,8 +110,9 @@ class SclBlock:
 class SclIndex:
     """All blocks of the sources, numbered, declared and laid out (lazily, cached)."""
 
-    def __init__(self, symbols: SymbolTable | None = None) -> None:
+    def __init__(self, symbols: SymbolTable | None = None, profile: str = DEFAULT_PROFILE) -> None:
         self.symbols = symbols if symbols is not None else SymbolTable()
+        self.profile = profile  # ``nasaq.lang.profiles``: what the checker accepts depends on it
         self.blocks: dict[tuple[BlockKind, int], SclBlock] = {}
         self.by_name: dict[str, SclBlock] = {}
         self.layout = Layout(self._expand)

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from nasaq.diagnostics import Diagnostic, Severity
 from nasaq.ir import BlockKind
+from nasaq.lang.profiles import DEFAULT_PROFILE
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import SclBlock, SclIndex
 from nasaq.lang.scl.lower import lower_index
@@ -27,10 +28,12 @@ from nasaq.lang.stl.symbols import Symbol, SymbolTable
 
 
 class SclUnit:
-    def __init__(self, sources: list[ast.SourceFile], symbols: SymbolTable) -> None:
+    def __init__(
+        self, sources: list[ast.SourceFile], symbols: SymbolTable, profile: str = DEFAULT_PROFILE
+    ) -> None:
         self.sources = sources
         self.symbols = symbols
-        self.index = SclIndex(symbols)
+        self.index = SclIndex(symbols, profile)
         self.externals: list[tuple[SclBlock, BlockInfo]] = []
 
     def bind(self, stl_blocks: dict[tuple[BlockKind, int], BlockInfo]) -> list[Diagnostic]:

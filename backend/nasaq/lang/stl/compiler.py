@@ -16,6 +16,7 @@ from typing import Any
 from nasaq.diagnostics import Diagnostic, Severity
 from nasaq.ir import Block, BlockKind, Program, Variable
 from nasaq.lang.layout import variables
+from nasaq.lang.profiles import DEFAULT_PROFILE
 from nasaq.lang.stl import ast
 from nasaq.lang.stl.addresses import AddressError, parse_address
 from nasaq.lang.stl.bind import BlockInfo, ProgramIndex
@@ -124,7 +125,8 @@ def _attach_comments(decls: list[ast.VarDeclNode], comments: dict[int, str]) -> 
 
 
 class _Compiler:
-    def __init__(self, mnemonics: str, test_ops: bool) -> None:
+    def __init__(self, mnemonics: str, test_ops: bool, profile: str = DEFAULT_PROFILE) -> None:
+        self.profile = profile
         self.mnemonics = mnemonics
         self.test_ops = test_ops
         self.diagnostics: list[Diagnostic] = []
@@ -271,7 +273,7 @@ class _Compiler:
                     registered.append((info, file))
         from nasaq.lang.scl.project import SclUnit  # SCL builds on this package
 
-        unit = SclUnit(self.scl_sources, self.symbols) if self.scl_sources else None
+        unit = SclUnit(self.scl_sources, self.symbols, self.profile) if self.scl_sources else None
         if unit is not None:
             self.diagnostics += unit.bind(self.index.blocks)
         for info, _ in registered:
@@ -440,26 +442,32 @@ class _Compiler:
 
 
 def compile_sources(
-    sources: Iterable[SourceFile], mnemonics: str = "auto", test_ops: bool = False
+    sources: Iterable[SourceFile],
+    mnemonics: str = "auto",
+    test_ops: bool = False,
+    profile: str = DEFAULT_PROFILE,
 ) -> CompileResult:
     """Compiles STL sources (``.awl``/``.stl``) with their symbol tables (``.sdf``, ``.asc``,
     ``.seq``, ``.csv``) into one program. ``mnemonics`` is ``"auto"`` (per file), ``"en"`` or
     ``"de"``; ``test_ops`` accepts awlsim's ``__ASSERT``-style self-check instructions and the
-    few awlsim extensions listed in ``nasaq.lang.stl``."""
+    few awlsim extensions listed in ``nasaq.lang.stl``; ``profile`` is the CPU family
+    (``nasaq.lang.profiles``), which decides what the sources may use."""
     gc_was_enabled = gc.isenabled()
     # A compilation makes millions of small objects and frees few until it ends: the cyclic
     # collector would scan them again and again (a quarter of the time of a large source) to
     # find nothing. The syntax trees are freed (by reference counting) before it runs again.
     gc.disable()
     try:
-        return _compile(list(sources), mnemonics, test_ops)
+        return _compile(list(sources), mnemonics, test_ops, profile)
     finally:
         if gc_was_enabled:
             gc.enable()
 
 
-def _compile(sources: list[SourceFile], mnemonics: str, test_ops: bool) -> CompileResult:
-    compiler = _Compiler(mnemonics, test_ops)
+def _compile(
+    sources: list[SourceFile], mnemonics: str, test_ops: bool, profile: str
+) -> CompileResult:
+    compiler = _Compiler(mnemonics, test_ops, profile)
     compiler.read(sources)
     compiler.diagnostics += compiler.index.diagnostics
     compiler.index.diagnostics = []
