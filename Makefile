@@ -11,7 +11,7 @@ DIST := frontend/dist/index.html
 FRONTEND_SOURCES := $(shell find frontend/src frontend/public -type f 2>/dev/null) \
 	frontend/index.html frontend/package.json frontend/tsconfig.json frontend/vite.config.ts
 
-.PHONY: help install run test bench conformance chromium lock clean
+.PHONY: help install run test bench conformance fuzz chromium lock clean
 
 help:
 	@echo "make run    install what is missing, then serve the IDE at http://127.0.0.1:8000"
@@ -29,6 +29,10 @@ help:
 	@echo "                  and its chart: opened and drawn (< 1 s), monitored while the active"
 	@echo "                  step moves (longest main-thread task < 100 ms, Chromium)"
 	@echo "make conformance  awlsim's self-checking STL programs (downloads awlsim from PyPI)"
+	@echo "make fuzz         the STL, SCL and LAD/FBD compilers fuzzed: 300,000 cases or an hour"
+	@echo "                  (FUZZ_CASES, FUZZ_SECONDS, FUZZ_SEED) on every core; each distinct failure"
+	@echo "                  printed once, its shrunk reproducer in .fuzz/failures/"
+	@echo "                  (make test runs 21,000 cases of it)"
 	@echo "make install | make lock (re-pin Python dependencies) | make clean"
 
 install: $(PY_STAMP) $(NODE_STAMP) $(DIST)
@@ -63,8 +67,20 @@ bench: install chromium
 	npm exec -- playwright test -c tests/e2e/bench/playwright.bench.config.ts
 	$(BIN)/python tests/bench/graph_bench.py
 
+# The corpus measurement runs even when awlsim's suite has failures; make fails if either did.
 conformance: install
-	$(BIN)/python tests/conformance/awlsim_suite.py
+	@status=0; $(BIN)/python tests/conformance/awlsim_suite.py || status=$$?; \
+	if [ -n "$$NASAQ_CORPUS" ]; then $(BIN)/python tests/conformance/corpus.py || status=$$?; \
+	else echo "Corpus measurement skipped: set NASAQ_CORPUS to a folder gathered with" \
+		"tests/conformance/corpus_gather.py (see tests/conformance/README.md)."; fi; \
+	exit $$status
+
+FUZZ_CASES ?= 300000
+FUZZ_SECONDS ?= 3600
+FUZZ_SEED ?= 1
+fuzz: install
+	$(BIN)/python tests/fuzz/driver.py --cases $(FUZZ_CASES) --seconds $(FUZZ_SECONDS) \
+		--seed $(FUZZ_SEED) --out .fuzz/failures
 
 # The browser tests drive Debian's Chromium; Playwright's own browser download is not used.
 chromium:

@@ -98,6 +98,7 @@ def suites() -> list[Suite]:
     ruff = str(VENV_BIN / "ruff")
     pytest = [str(VENV_BIN / "pytest"), "-q"]
     python_paths = ["backend", "tests/backend", "tests/bench", "tests/conformance", "tests/corpus"]
+    python_paths.append("tests/fuzz")
     python_paths.append("tests/run_suites.py")
     ruff_config = ["--config", "backend/pyproject.toml"]
     npm = shutil.which("npm") or "npm"
@@ -142,6 +143,23 @@ def suites() -> list[Suite]:
             junit=REPORTS / "pytest-lang.xml",
             cwd=ROOT / "backend",
             group="pytest",
+        ),
+        # The compilers' own fuzzer, bounded (tests/fuzz/driver.py): 21,000 cases, about 90 s
+        # on both cores; here one worker runs beside the two lanes (which take longer).
+        Suite(
+            "fuzz",
+            [
+                [
+                    str(VENV_BIN / "python"),
+                    "tests/fuzz/driver.py",
+                    "--cases=21000",
+                    "--jobs=1",
+                    f"--junit={REPORTS / 'fuzz.xml'}",
+                    f"--out={REPORTS / 'fuzz-failures'}",
+                ]
+            ],
+            junit=REPORTS / "fuzz.xml",
+            beside=True,
         ),
         Suite(
             "playwright",

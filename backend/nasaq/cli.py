@@ -10,7 +10,15 @@ import sys
 from collections.abc import Sequence
 
 from nasaq import __version__
+from nasaq.lang.profiles import PROFILES
 from nasaq.settings import Settings, get_settings
+
+EXIT_STATUS = (
+    "exit status (every command): 0 all is well; 1 what the command was given has errors "
+    "(sources that do not compile, a CPU STOP on an error, a failed scenario or lesson, a "
+    "refused conversion); 2 a usage error (an unknown option or address, a file that cannot be "
+    "read, nothing found)"
+)
 
 
 def _serve(settings: Settings, args: argparse.Namespace) -> int:
@@ -71,7 +79,7 @@ def _compile(_settings: Settings, args: argparse.Namespace) -> int:
 
     from nasaq.headless.emit import main as compile_main
 
-    return compile_main([Path(source) for source in args.sources], args.emit)
+    return compile_main([Path(source) for source in args.sources], args.emit, profile=args.profile)
 
 
 def _convert(_settings: Settings, args: argparse.Namespace) -> int:
@@ -100,7 +108,7 @@ def _lessons(settings: Settings, args: argparse.Namespace) -> int:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="nasaq", description=__doc__)
+    parser = argparse.ArgumentParser(prog="nasaq", description=__doc__, epilog=EXIT_STATUS)
     parser.add_argument("--version", action="version", version=f"nasaq {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
 
@@ -116,7 +124,7 @@ def build_parser() -> argparse.ArgumentParser:
         "sources",
         nargs="+",
         metavar="SOURCE",
-        help=".awl/.scl/.lad/.fbd/.graph sources, symbol tables",
+        help=".awl/.scl/.db/.udt/.lad/.fbd/.graph sources, symbol tables",
     )
     run.add_argument("--cycles", type=int, default=1, help="scans of OB1 to run (after OB100)")
     run.add_argument(
@@ -137,7 +145,12 @@ def build_parser() -> argparse.ArgumentParser:
         "--test-ops", action="store_true", help="accept the __ASSERT== ... self-check operations"
     )
     run.add_argument(
-        "--profile", choices=["S7-300", "S7-400"], help="default: cpu.properties, else S7-300"
+        "--cpu",
+        "--profile",
+        dest="profile",
+        choices=PROFILES,
+        help="the CPU family (S7-1500 stands for S7-1200/1500); default: cpu.properties, else "
+        "S7-300",
     )
     run.add_argument(
         "--time",
@@ -162,13 +175,20 @@ def build_parser() -> argparse.ArgumentParser:
         "compile", help="compile sources: print problems (and, with --emit stl, the STL)"
     )
     compile_.add_argument(
-        "sources", nargs="+", metavar="SOURCE", help=".awl/.scl/.lad/.fbd/.graph sources"
+        "sources", nargs="+", metavar="SOURCE", help=".awl/.scl/.db/.udt/.lad/.fbd/.graph sources"
     )
     compile_.add_argument(
         "--emit",
         choices=["stl", "none"],
         default="none",
         help="stl: print the STL the SCL and S7-Graph blocks are compiled to, with their lines",
+    )
+    compile_.add_argument(
+        "--cpu",
+        "--profile",
+        dest="profile",
+        choices=PROFILES,
+        help="the CPU family to compile for; default: cpu.properties, else S7-300",
     )
     compile_.set_defaults(handler=_compile)
 
@@ -210,6 +230,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     openapi = commands.add_parser("openapi", help="print the OpenAPI schema as JSON")
     openapi.set_defaults(handler=_openapi)
+    for command in commands.choices.values():
+        command.epilog = EXIT_STATUS
     return parser
 
 

@@ -39,7 +39,7 @@ function check(text: string) {
       : [];
   return {
     properties: {
-      profile: 'S7-300',
+      profile: /profile = (S7-\d+)/.exec(text)?.[1] ?? 'S7-300',
       cycle_monitoring_time: 150,
       cycle_time: Number.isNaN(cycle) || cycle > 6000 ? 10 : cycle,
       clock_memory: clock === undefined ? null : Number(clock),
@@ -101,5 +101,33 @@ describe('the CPU properties page', () => {
     await waitFor(() => expect(saves.length).toBeGreaterThan(0));
     expect(saves.at(-1)).toEqual({ text: '# my CPU\ncycle_time = 20   # scan\nclock_memory = none\n', base_version: 3 });
     expect(screen.getByTestId('cpu-props-text').textContent).toBe(saves.at(-1)!.text);
+  }, 30_000);
+
+  it('offers the S7-1200/1500 family as a profile and saves it', async () => {
+    const saves: Array<{ text: string; base_version: number | null }> = [];
+    mockServer({
+      'POST /api/cpu-properties/check': (init) => json(check((JSON.parse(String(init?.body)) as { text: string }).text)),
+      'PUT /api/projects/1/files/cpu.properties': (init) => {
+        saves.push(JSON.parse(String(init?.body)));
+        return json({ name: 'cpu.properties', language: 'cpu', size: 1, version: 4, created_at: '', updated_at: '' });
+      },
+      'GET /api/projects/1/files': () => json([]),
+      'GET /api/projects/1/blocks': () => json({ blocks: [], diagnostics: [] }),
+    });
+    const user = userEvent.setup();
+    render(
+      <I18nextProvider i18n={createI18n('en')}>
+        <EditorTabsProvider>
+          <OpenPage />
+        </EditorTabsProvider>
+      </I18nextProvider>,
+    );
+    const profile = (await screen.findByLabelText('CPU family')) as HTMLSelectElement;
+    expect([...profile.options].map((option) => option.textContent)).toEqual(['S7-300', 'S7-400', 'S7-1200/1500']);
+    await user.selectOptions(profile, 'S7-1500');
+    await waitFor(() => expect(profile.value).toBe('S7-1500'));
+    await user.click(screen.getByTestId('cpu-props-save'));
+    await waitFor(() => expect(saves.length).toBeGreaterThan(0));
+    expect(saves.at(-1)!.text).toContain('profile = S7-1500');
   }, 30_000);
 });

@@ -57,9 +57,13 @@ function pythonDict(source: string, name: string): Array<[string, string]> {
   return [...match[1]!.matchAll(/"([^"]+)"\s*:\s*("([^"]*)"|[^,\n]*)/g)].map((m) => [m[1]!, m[3] ?? m[2]!]);
 }
 
-/** Keyword terminals of a Lark grammar: `IF: "IF"i`. */
+/** Keyword terminals of a Lark grammar: `IF: "IF"i`, and a keyword written as a regular expression
+ * that starts with its own name (`END_REGION.4: /END_REGION(?![\w])...`, which takes a title). */
 function larkKeywords(grammar: string): string[] {
-  return [...grammar.matchAll(/^([A-Z_]+):\s*"([A-Z_]+)"i\s*$/gm)].map((m) => m[2]!);
+  return [
+    ...[...grammar.matchAll(/^([A-Z_]+):\s*"([A-Z_]+)"i\s*$/gm)].map((m) => m[2]!),
+    ...[...grammar.matchAll(/^([A-Z_]+)(?:\.\d+)?:\s*\/\1\(\?!\[\\w\]\)/gm)].map((m) => m[1]!),
+  ];
 }
 
 describe('the word lists are the compilers\' own', () => {
@@ -375,6 +379,14 @@ describe('SCL tokenizer', () => {
       ['END_VAR', 'keyword'],
       ['REGION', 'keyword'], [' Pump control', 'comment.title'],
       ['END_REGION', 'keyword'],
+    ]);
+  });
+
+  it('reads TIA Portal exports: END_REGION with its title, nested block comments', () => {
+    expect(scl('END_REGION Pump control // done\n(* a (* b *) still *) x')).toEqual([
+      ['END_REGION', 'keyword'], [' Pump control ', 'comment.title'], ['// done', 'comment'],
+      ['(* a (* b *) still *)', 'comment'],
+      ['x', 'identifier'],
     ]);
   });
 

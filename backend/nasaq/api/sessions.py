@@ -16,7 +16,7 @@ from __future__ import annotations
 import asyncio
 import time
 from datetime import UTC, datetime
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any
 
 from fastapi import APIRouter, Query, Request, Response, WebSocket, status
 from pydantic import BaseModel, Field
@@ -24,6 +24,8 @@ from pydantic import BaseModel, Field
 from nasaq.api.cpu_properties import checked as checked_properties
 from nasaq.api.cpu_properties import with_properties
 from nasaq.api.errors import ApiError, ApiErrorBody
+from nasaq.lang.limits import MAX_SOURCE_CHARS
+from nasaq.lang.profiles import ProfileName
 from nasaq.monitor.connection import Connection
 from nasaq.monitor.errors import MonitorError
 from nasaq.monitor.pool import WorkerPool
@@ -33,7 +35,6 @@ from nasaq.storage.database import transaction
 
 router = APIRouter(prefix="/sessions", tags=["simulation"])
 
-MAX_SOURCE_CHARS = 4 * 1024 * 1024
 _STATUS = {"MON609": 404, "MON610": 503, "MON611": 422, "MON616": 413, "MON607": 409}
 
 
@@ -43,7 +44,7 @@ class Source(BaseModel):
 
 
 class SessionOptions(BaseModel):
-    profile: Literal["S7-300", "S7-400"] = "S7-300"
+    profile: ProfileName = "S7-300"
     cycle_ms: float = Field(default=10, ge=1, le=60_000)
     time_mode: TimeModeName = "virtual"
 
@@ -66,7 +67,7 @@ class SessionOut(BaseModel):
         default=None, description="The project the session was made from (None: plain sources)"
     )
     project_name: str | None = Field(default=None, description="That project's name now")
-    profile: Literal["S7-300", "S7-400"] = "S7-300"
+    profile: ProfileName = "S7-300"
     started_at: datetime = Field(description="When the session was created (UTC)")
     age_seconds: float = Field(description="Seconds since it was created")
 

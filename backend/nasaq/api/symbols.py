@@ -24,13 +24,13 @@ from nasaq.api.errors import ApiError, ApiErrorBody
 from nasaq.api.files import checked_name, checked_text
 from nasaq.api.projects import found_project
 from nasaq.ir import BlockKind, Program
-from nasaq.lang.stl import SourceFile, compile_sources
 from nasaq.lang.stl.addresses import AddressError, parse_address
 from nasaq.storage import files as store
 from nasaq.storage import projects as project_store
 from nasaq.storage.database import transaction
 from nasaq.workbench import symbol_table as table
 from nasaq.workbench.members import Member, block_members
+from nasaq.workbench.project_compile import compile_project
 from nasaq.workbench.symbol_table import Format, RowProblem, SymbolRow, TableError
 from nasaq.workbench.tree import header_line, header_lines
 
@@ -232,7 +232,7 @@ def _compiled(factory: sessionmaker[Session], project_id: int) -> tuple[Program,
         if project_store.get_project(session, project_id) is None:
             raise ApiError("API104", 404, id=project_id)
         sources = store.sources(session, project_id)
-    result = compile_sources(SourceFile(name, text) for name, text in sources)
+    result = compile_project(sources)
     return result.program, dict(sources)
 
 

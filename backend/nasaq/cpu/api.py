@@ -5,6 +5,7 @@ from __future__ import annotations
 from nasaq.cpu.codegen.test_ops import feature_profile
 from nasaq.cpu.cycle import DiagnosticEntry, Engine, Retentive
 from nasaq.cpu.memory import read_bytes, write_bytes
+from nasaq.cpu.obs import check_periods
 from nasaq.cpu.profile import Profile
 from nasaq.cpu.status_word import pack
 from nasaq.ir import Area, Direct, Program, Width
@@ -28,11 +29,14 @@ class Cpu:
         test_ops: bool = False,
         clock_memory_byte: int | None = None,
         retentive: Retentive | None = None,
+        cyclic_periods: dict[int, int] | None = None,
     ) -> None:
         """``clock_memory_byte``: the marker byte the CPU uses as clock memory (the CPU
         properties' "clock memory" in STEP 7), or None for none; ``retentive``: the MB, T and C
-        ranges a warm restart keeps (default MB 0-15, no timers, C 0-7). Raises ValueError if the
-        profile has no such marker byte or fewer markers, timers or counters than retentive."""
+        ranges a warm restart keeps (default MB 0-15, no timers, C 0-7); ``cyclic_periods``: the
+        cycle time in ms of cyclic interrupt OBs (default 100 ms each; ``nasaq.cpu.obs``). Raises
+        ValueError if the profile has no such marker byte, fewer markers, timers or counters than
+        retentive, or no such cyclic interrupt OB."""
         if test_ops:  # a self-checking test program may ask for 4 accumulators (__FEATURE 0, 4)
             profile = feature_profile(program, profile)
         if clock_memory_byte is not None and not 0 <= clock_memory_byte < profile.marker_bytes:
@@ -48,6 +52,7 @@ class Cpu:
         ):
             if not 0 <= count <= limit:
                 raise ValueError(f"retentive {what}: the {profile.value} has 0 to {limit}")
+        check_periods(cyclic_periods or {}, profile)
         self.profile = profile
         self._engine = Engine(
             program,
@@ -57,6 +62,7 @@ class Cpu:
             test_ops,
             clock_memory_byte=clock_memory_byte,
             retentive=kept,
+            cyclic_periods=cyclic_periods,
         )
 
     @property

@@ -10,10 +10,15 @@ STRING input or output is copied as an assignment copies it: the characters that
 number, never the target's maximum length.
 As with the block stack of a real CPU, the DB and DI registers are restored when the callee
 returns, except that ``CALL FB n, DB m`` leaves them as STEP 7's macro does (DB = DB m, DI as
-before; the callee starts with DB = the caller's DI). AR2 is restored after FB calls and after
+before; the callee starts with DB = the caller's DI; a multi-instance call too, after which both
+registers hold the caller's DI). AR2 is restored after FB calls and after
 every CALL made from an FB (STEP 7's CALL macro keeps the caller's instance base).
 FC parameters of ARRAY, STRUCT, UDT, STRING, DATE_AND_TIME or POINTER type also get a 6-byte DB
 pointer in the caller's local data (the callee's V area), which ``L P##param`` points to.
+An FC that passes such a parameter of its own on to another FC passes the pointer on, as STEP 7
+does; when it points into the local data of the FC's caller (a constant or a temporary there),
+which no area pointer of the callee reaches, the data is copied into the FC's local data for the
+call and back after it, so the callee reads and writes what the FC was given.
 The IEC counters and timers (SFB 0-5, ``nasaq.cpu.iec_blocks``) are FBs whose body is Python:
 their calls go through the same instance and parameter handling; so are the IEC library FCs
 (CONCAT, I_STRNG, AD_DT_TM ..., ``nasaq.cpu.iec_library``, loaded as FCs of the program).
@@ -27,6 +32,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from nasaq.cpu import iec_blocks
+from nasaq.cpu.clock import Clock
 from nasaq.cpu.errors import CpuError, CpuStopError, location
 from nasaq.cpu.memory import read_bytes, write_bytes
 from nasaq.cpu.pointers import ANY_TYPES, area_pointer
@@ -81,6 +87,7 @@ class CallSite:
     vslots: dict[str, int] = field(default_factory=dict)  # DB pointers in the caller's frame
     vconsts: dict[str, int] = field(default_factory=dict)  # constants copied into that frame
     vcopies: dict[str, int] = field(default_factory=dict)  # DB elements copied in and back
+    vforward: dict[str, int] = field(default_factory=dict)  # passed-on parameters, when copied
 
 
 _DB_POINTER = re.compile(r"\s*P#DB\s*(\d+)\s*\.", re.IGNORECASE)
@@ -121,6 +128,33 @@ def _copy_string(source: bytearray, start: int, target: bytearray, at: int) -> N
     count = min(source[start + 1], target[at], len(source) - start - 2, len(target) - at - 2)
     target[at + 1] = count
     target[at + 2 : at + 2 + count] = source[start + 2 : start + 2 + count]
+
+
+def _forward_size(var: Variable | None) -> int:
+    return max(2, (var.size_bits + 7) // 8) if var is not None else 2
+
+
+def _copy_forwarded(ref: Ref, frame: bytearray, at: int, size: int, is_string: bool) -> None:
+    """A passed-on parameter copied into the caller's local data: a STRING as its maximum
+    length (cut to the copy), current length and characters, anything else byte for byte."""
+    buf, start, _bit = ref
+    count = max(0, min(size, len(buf) - start, len(frame) - at))
+    frame[at : at + count] = buf[start : start + count]
+    if is_string and count >= 2:
+        frame[at] = min(frame[at], count - 2)
+        frame[at + 1] = min(frame[at + 1], frame[at])
+
+
+def _copy_back_forwarded(frame: bytearray, at: int, size: int, ref: Ref, is_string: bool) -> None:
+    """What the callee left in the copy goes back (a STRING keeps the original's maximum)."""
+    buf, start, _bit = ref
+    count = max(0, min(size, len(buf) - start, len(frame) - at))
+    if is_string and count >= 2:
+        length = min(frame[at + 1], buf[start], count - 2)
+        buf[start + 1] = length
+        buf[start + 2 : start + 2 + length] = frame[at + 2 : at + 2 + length]
+        return
+    buf[start : start + count] = frame[at : at + count]
 
 
 def passed_as_db_pointer(var: Variable) -> bool:
@@ -165,6 +199,7 @@ class Calls:
         self.test_ops = test_ops  # awlsim's own SFCs (negative numbers) exist only then
         self.clock_reset = clock_reset  # restarts the clock memory (awlsim's SFC -4)
         self.tick_offset = 0  # added to the virtual clock for TIME_TCK (moved by SFC -4)
+        self.clock = Clock()  # the time of day SFC 1 READ_CLK reads (``nasaq.cpu.clock``)
         self._db_ids: dict[int, int] | None = None
         self._system_fbs: dict[int, Compiled] = {}  # SFB 0-5, made at their first call
 
@@ -219,16 +254,19 @@ class Calls:
         callee_params: list[Ref] = []
         fb_instance: tuple[bytearray, int] | None = None
         kind = callee.block.kind
+        forwarded: list[tuple[Ref, int, int, bool]] | None = None
         if (kind is BlockKind.FB or kind is BlockKind.SFB) and not site.raw:
             fb_instance = self._enter_fb(site, callee, frame, vframe, params)
         elif not site.raw:
             callee_params = self._fc_params(site, callee, frame, vframe, params)
             if site.vslots:
-                self._write_db_pointers(site, callee, frame, vframe, params, callee_params)
+                forwarded = self._write_db_pointers(
+                    site, callee, frame, vframe, params, callee_params
+                )
         saved_vptrs = m.vptrs
         if callee.param_pointers:
             m.vptrs = self._param_pointers(site, callee, frame, callee_params)
-        if fb_instance is not None and isinstance(site.instance, BlockRef):
+        if fb_instance is not None and isinstance(site.instance, BlockRef | MultiInstance):
             m.db, m.dbno = saved_di, saved_dino
         m.fc = m.orb = m.os = 0
         m.sta = 1
@@ -247,6 +285,12 @@ class Calls:
             # DB and DI as it was (its own DB register is lost).
             m.db, m.dbno = fb_instance[0], site.instance.number
             m.di, m.dino = saved_di, saved_dino
+        elif fb_instance is not None and isinstance(site.instance, MultiInstance):
+            # A multi-instance the same way (COMPATIBILITY.md, "Multi-instance calls"): the
+            # callee starts with DB = the caller's DI (the DB that holds the multi-instance),
+            # and the caller goes on with that DB in both registers.
+            m.db, m.dbno = saved_di, saved_dino
+            m.di, m.dino = saved_di, saved_dino
         else:
             m.db, m.dbno, m.di, m.dino = saved_db, saved_dbno, saved_di, saved_dino
         if fb_instance is not None or keep_ar2:
@@ -255,6 +299,9 @@ class Calls:
             self._leave_fb(site, callee, fb_instance, frame, vframe, params)
         elif site.vcopies:
             self._copy_back(site, callee, frame, vframe, params)
+        if forwarded is not None:
+            for ref, offset, size, is_string in forwarded:
+                _copy_back_forwarded(frame, offset, size, ref, is_string)
         m.os = m.orb = m.fc = 0
         m.sta = 1
 
@@ -362,8 +409,11 @@ class Calls:
         vframe: bytearray,
         params: list[Ref],
         refs: list[Ref],
-    ) -> None:
-        """Fill the caller's DB pointers for the FC's ARRAY/STRUCT/.../POINTER parameters."""
+    ) -> list[tuple[Ref, int, int, bool]] | None:
+        """Fill the caller's DB pointers for the FC's ARRAY/STRUCT/.../POINTER parameters.
+        A passed-on parameter that no pointer reaches is copied: the copies to take back
+        after the call, None when there is none."""
+        forwarded: list[tuple[Ref, int, int, bool]] | None = None
         formals = {v.name: v for v in callee.block.interface if v.section in PARAM_SECTIONS}
         actuals = {a.name: a.value for a in site.args}
         for slot, name in enumerate(callee.param_slots):
@@ -382,7 +432,18 @@ class Calls:
                 number, pointer = self._pointer_to(actual, site, frame, vframe, params)
             else:
                 number, pointer = self._area_pointer(refs[slot], frame)
+                copy_at = site.vforward.get(name)
+                if pointer == 0 and copy_at is not None and refs[slot][0] is not None:
+                    size = _forward_size(formals.get(name))
+                    is_string = type_.startswith("STRING")
+                    _copy_forwarded(refs[slot], frame, copy_at, size, is_string)
+                    if forwarded is None:
+                        forwarded = []
+                    forwarded.append((refs[slot], copy_at, size, is_string))
+                    refs[slot] = (frame, copy_at, 0)
+                    number, pointer = 0, area_pointer(Area.V, copy_at)
             frame[offset : offset + 6] = number.to_bytes(2, "big") + pointer.to_bytes(4, "big")
+        return forwarded
 
     def _param_pointers(
         self, site: CallSite, callee: Compiled, frame: bytearray, refs: list[Ref]
@@ -794,6 +855,17 @@ class Calls:
                     )
                     ticks = (self.m.now + self.tick_offset) & 0x7FFFFFFF
                     self._store(buf, byte, 32, ticks, bit)
+            return
+        if number == 1:  # READ_CLK: CDT := the time of day, RET_VAL := 0
+            for arg in site.args:
+                buf, byte, bit = self.locate(arg.value, frame, vframe, params, site.caller_slots)
+                if arg.name.upper() == "CDT":
+                    if byte < 0 or byte + 8 > len(buf):
+                        raise CpuError("SIM504", address=f"byte {byte} (CDT)")
+                    buf[byte : byte + 8] = self.clock.date_and_time(self.m.now)
+                elif arg.name.upper() == "RET_VAL":
+                    self._store(buf, byte, 16, 0, bit)
+            self.m.br = 1
             return
         if number < 0 and self.test_ops:
             self._awlsim_sfc(site, number, frame, vframe, params)

@@ -2,9 +2,10 @@
 
 Warm restart clears the non-retentive state and runs OB100; cold restart clears everything, gives
 the data blocks their downloaded values back and runs OB102. Each scan copies the peripheral
-inputs into the PII (forced inputs win), runs OB35 when its 100 ms of virtual time are due,
-runs OB1, copies the PIQ to the peripheral outputs (forced outputs win) and advances the
-virtual clock by the cycle time. The clock memory byte (if one is configured) follows the
+inputs into the PII (forced inputs win), runs the cyclic interrupt OBs that are due (OB35 every
+100 ms), runs OB1 (on S7-1200/1500 then the further program-cycle OBs: ``nasaq.cpu.obs``),
+copies the PIQ to the peripheral outputs (forced outputs win) and advances the virtual clock by
+the cycle time. The clock memory byte (if one is configured) follows the
 virtual clock from the restart on; it is written at the restart and at the start of every scan.
 Runtime errors are entered in the diagnostic buffer and call OB121/OB122 if loaded, otherwise the
 CPU goes to STOP with the location. Without OB1 the CPU
@@ -16,6 +17,7 @@ from __future__ import annotations
 
 import logging
 import traceback
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import TracebackType
 from typing import Any
@@ -35,6 +37,7 @@ from nasaq.cpu.errors import (
 from nasaq.cpu.loader import Loader
 from nasaq.cpu.machine import Machine
 from nasaq.cpu.memory import Memory
+from nasaq.cpu.obs import EVENT_STARTUP, plan
 from nasaq.cpu.profile import Profile
 from nasaq.cpu.timers import Timers
 from nasaq.diagnostics import render
@@ -42,21 +45,12 @@ from nasaq.ir import BlockKind, Program
 
 log = logging.getLogger(__name__)
 
-OB35_INTERVAL_MS = 100
 RETENTIVE_MARKER_BYTES = 16  # STEP 7 default: MB 0..15 keep their value over a warm restart
 RETENTIVE_COUNTERS = 8  # C 0..7
 CLOCK_STEP_MS = 50
+NEVER = 1 << 62  # the due time of a cyclic interrupt a program does not have
 # Half periods of the clock memory bits in 50 ms steps: bit 0 = 0.1 s (10 Hz) ... bit 7 = 2 s.
 CLOCK_HALF_PERIODS = (1, 2, 4, 5, 8, 10, 16, 20)
-
-_START_INFO = {  # OB number: (event class, priority)
-    1: (0x11, 1),
-    35: (0x11, 12),
-    100: (0x13, 27),
-    102: (0x13, 27),
-    121: (0x25, 1),
-    122: (0x29, 1),
-}
 
 
 @dataclass(frozen=True, slots=True)
@@ -91,8 +85,12 @@ class Engine:
         test_ops: bool,
         clock_memory_byte: int | None = None,
         retentive: Retentive | None = None,
+        cyclic_periods: Mapping[int, int] | None = None,
     ) -> None:
         self.program = program
+        self.obs = plan(program, profile, cyclic_periods or {})
+        self.cyclic_due = [0] * len(self.obs.cyclic)  # virtual time each cyclic OB is due
+        self.next_cyclic = 0  # the earliest of them (a scan without a due OB checks only this)
         self.retentive = retentive or Retentive()
         self.profile = profile
         self.cycle_ms = cycle_ms
@@ -135,7 +133,6 @@ class Engine:
         self.forced_inputs: dict[tuple[int, int], int] = {}
         self.forced_outputs: dict[tuple[int, int], int] = {}
         self.scans = 0
-        self.next_ob35 = OB35_INTERVAL_MS
         self.first_scan = True
         self.cold_start = False
         self._clock_fraction = 0.0
@@ -169,14 +166,18 @@ class Engine:
         self.mode = "RUN"
         self.stop_reason = self.stop_code = None
         self.stopped_by_program = False
-        self.next_ob35 = self.m.now + OB35_INTERVAL_MS
+        for k, (_number, period) in enumerate(self.obs.cyclic):
+            self.cyclic_due[k] = self.m.now + period
+        self.next_cyclic = min(self.cyclic_due, default=NEVER)
         self.first_scan = True
         self.cold_start = cold
         self.restart_clock_memory()
         if self.loader.get(BlockKind.OB, 1) is None:
             self._diagnose(CpuError("SIM524"))  # information only: the cycles run no program
         self.m.lim = self.m.n + self._budget()
-        self._run_ob(102 if cold else 100)
+        for number in self.obs.cold if cold else self.obs.warm:
+            if self.mode == "RUN":
+                self._run_ob(number)
 
     def scan(self) -> None:
         if self.mode != "RUN":
@@ -195,11 +196,16 @@ class Engine:
         if self.clock_memory_byte is not None:
             mem.M[self.clock_memory_byte] = clock_memory_value(m.now - self.clock_origin)
         m.lim = m.n + self._budget()
-        while self.mode == "RUN" and m.now >= self.next_ob35:
-            self.next_ob35 += OB35_INTERVAL_MS
-            self._run_ob(35)
-        if self.mode == "RUN":
-            self._run_ob(1)
+        if m.now >= self.next_cyclic:
+            due = self.cyclic_due
+            for k, (number, period) in enumerate(self.obs.cyclic):
+                while self.mode == "RUN" and m.now >= due[k]:
+                    due[k] += period
+                    self._run_ob(number)
+            self.next_cyclic = min(due, default=NEVER)
+        for number in self.obs.cycle:
+            if self.mode == "RUN":
+                self._run_ob(number)
         if self.mode == "RUN":
             count = min(len(mem.Q), len(mem.PQ))
             mem.PQ[:count] = mem.Q[:count]
@@ -228,14 +234,12 @@ class Engine:
             return False
         m = self.m
         frame = bytearray(max(compiled.frame_size, 20))
-        event, priority = _START_INFO.get(number, (0x11, 1))
+        event, priority = self.obs.start_info.get(number, (0x11, 1))
         frame[0], frame[2], frame[3] = event, priority, number & 0xFF
-        if number == 1:  # OB1_SCAN_1: first cycle after a warm (1) or cold (4) restart, else 3
+        if priority == 1 and event == 0x11:  # OB1_SCAN_1: 1st cycle after warm (1)/cold (4), else 3
             frame[1] = (0x04 if self.cold_start else 0x01) if self.first_scan else 0x03
-        elif number == 100:
-            frame[1] = 0x81  # OB100_STRTUP: manual warm restart
-        elif number == 102:
-            frame[1] = 0x85  # OB102_STRTUP: manual cold restart
+        elif event == EVENT_STARTUP:  # OB100_STRTUP: manual warm (16#81) or cold (16#85) restart
+            frame[1] = 0x85 if self.cold_start else 0x81
         m.depth, m.lstack, m.priority = 1, len(frame), priority
         m.fc = m.orb = m.os = 0
         m.sta = 1
@@ -291,7 +295,7 @@ class Engine:
         m = self.m
         saved = m.save()
         frame = bytearray(max(handler.frame_size, 20))
-        event, _priority = _START_INFO[ob]
+        event, _priority = self.obs.start_info[ob]
         frame[0], frame[1], frame[2], frame[3] = event, FAULT_IDS.get(error.code, 0), m.priority, ob
         m.depth, m.lstack = 1, len(frame)
         self._in_error_ob = True

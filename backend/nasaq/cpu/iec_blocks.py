@@ -1,4 +1,5 @@
-"""The IEC counters and timers of the S7-300/400: SFB 0 CTU, 1 CTD, 2 CTUD, 3 TP, 4 TON, 5 TOF.
+"""The IEC counters and timers of the S7-300/400: SFB 0 CTU, 1 CTD, 2 CTUD, 3 TP, 4 TON, 5 TOF;
+and IEC's edge detectors R_TRIG (SFB 1000) and F_TRIG (SFB 1001), numbered by Nasaq.
 
 Each block is a pure function ``body(buf, base, now) -> BR`` on its instance data: ``buf`` is
 the instance DB (the DI register during the call), ``base`` the byte where the instance starts
@@ -35,6 +36,9 @@ Behaviour (System Software for S7-300/400, System and Standard Functions, chapte
 - PT = 0 resets the timer (Q = 0, ET = 0, STATE = 0, and IN in the instance := 0), as the manual
   says to do in OB100 after a warm restart; a negative PT ("PT must be positive") does the same
   without touching IN, and gives BR = 0.
+- R_TRIG/F_TRIG: CLK input, Q output, M the value CLK had at the previous call (FALSE at
+  first, so R_TRIG sees an edge at a first call with CLK = 1 and F_TRIG none at a first call with
+  CLK = 0, as IEC 61131-3 and TIA Portal's instructions do).
 - STATE (bit 0 running, bit 1 expired for TP/TON; bit 0 previous IN, bit 1 delaying for TOF),
   STIME (start time) and ATIME (time of the last call while running) use awlsim's encoding; what
   a real CPU keeps there is not documented. Elapsed time is ``(ATIME - STIME) mod 2**31``, so a
@@ -49,7 +53,7 @@ from collections.abc import Callable
 
 from nasaq.ir import Variable
 from nasaq.lang.layout import Layout, variables
-from nasaq.lang.system_blocks import SFB_INTERFACES, SFB_NAMES
+from nasaq.lang.system_blocks import F_TRIG_SFB, R_TRIG_SFB, SFB_INTERFACES, SFB_NAMES
 from nasaq.lang.types import Field, elementary
 
 Body = Callable[[bytearray, int, int], int]
@@ -265,4 +269,33 @@ def tof(buf: bytearray, base: int, now: int) -> int:
     return 1
 
 
-BODIES: dict[int, Body] = {0: ctu, 1: ctd, 2: ctud, 3: tp, 4: ton, 5: tof}
+# -- edge detectors (IEC 61131-3 R_TRIG and F_TRIG) ----------------------------------------------
+_CLK, _EDGE_Q, _EDGE_M = _at(R_TRIG_SFB, "CLK", "Q", "M")
+
+
+def r_trig(buf: bytearray, base: int, now: int) -> int:
+    """R_TRIG: Q = 1 for the one call at which CLK is 1 and was 0 at the previous call (M)."""
+    clk = _bit(buf, base, _CLK)
+    _set(buf, base, _EDGE_Q, clk and not _bit(buf, base, _EDGE_M))
+    _set(buf, base, _EDGE_M, clk)
+    return 1
+
+
+def f_trig(buf: bytearray, base: int, now: int) -> int:
+    """F_TRIG: Q = 1 for the one call at which CLK is 0 and was 1 at the previous call (M)."""
+    clk = _bit(buf, base, _CLK)
+    _set(buf, base, _EDGE_Q, not clk and _bit(buf, base, _EDGE_M))
+    _set(buf, base, _EDGE_M, clk)
+    return 1
+
+
+BODIES: dict[int, Body] = {
+    0: ctu,
+    1: ctd,
+    2: ctud,
+    3: tp,
+    4: ton,
+    5: tof,
+    R_TRIG_SFB: r_trig,
+    F_TRIG_SFB: f_trig,
+}

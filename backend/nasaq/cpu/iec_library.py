@@ -10,7 +10,10 @@ to where the result goes. The body returns BR, which the caller sees as the FC's
 
 STRINGs: byte 0 the maximum length, byte 1 the current length, then the characters. A function
 reads ``min(current, maximum)`` characters of its inputs and writes at most the maximum length
-of RET_VAL's actual (its byte 0, never changed), then the current length.
+of RET_VAL's actual (its byte 0, never changed), then the current length. The WSTRING versions
+(``LEN_WSTRING``, ``EQ_WSTRING`` ...; S7-1200/1500) run the same bodies on WORD lengths and
+UTF-16 code units (``_Texts``); ``WSTRING_TO_STRING`` writes ``?`` for a character beyond
+Latin-1 and gives BR = 0 (*Nasaq*).
 
 Behaviour (System Software for S7-300/400, System and Standard Functions, "IEC Functions"; where
 the manual says nothing, the choice is marked *Nasaq*):
@@ -55,14 +58,16 @@ the manual says nothing, the choice is marked *Nasaq*):
 from __future__ import annotations
 
 import datetime
+import functools
 import re
 import struct
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from nasaq.cpu.errors import CpuError
+from nasaq.cpu.long_library import BODIES as LONG_BODIES
 from nasaq.ir import Block, BlockKind
-from nasaq.lang.iec_library import FAMILY, FUNCTIONS
+from nasaq.lang.iec_library import FAMILY, FUNCTIONS, WIDE
 
 if TYPE_CHECKING:
     from nasaq.cpu.codegen.compiler import Compiled
@@ -145,82 +150,147 @@ def _put_bool(ref: Ref, value: bool) -> None:
 # -- STRING functions -----------------------------------------------------------------------------
 
 
-def _len(p: list[Ref]) -> int:
-    _put_int(p[1], len(_text(p[0])))
+class _Texts:
+    """Reads and writes the STRINGs (``width`` 1) or WSTRINGs (``width`` 2: WORD lengths,
+    UTF-16 code units) of a function's parameters as Python text, one character a code unit,
+    so that one body serves both."""
+
+    def __init__(self, width: int) -> None:
+        self.width = width
+
+    def text(self, ref: Ref) -> str:
+        if self.width == 1:
+            return _text(ref).decode("latin-1")
+        header = _bytes(ref, 4)
+        count = min(int.from_bytes(header[:2], "big"), int.from_bytes(header[2:], "big"))
+        units = _bytes(ref, 4 + 2 * count)[4:]
+        return "".join(chr(int.from_bytes(units[i : i + 2], "big")) for i in range(0, 2 * count, 2))
+
+    def put(self, ref: Ref, text: str) -> int:
+        """RET_VAL := ``text``, cut to its maximum length (BR 0 then); the maximum stays."""
+        if self.width == 1:
+            return _put_text(ref, text.encode("latin-1"))
+        room = int.from_bytes(_bytes(ref, 2), "big")
+        count = min(room, len(text))
+        units = b"".join(ord(char).to_bytes(2, "big") for char in text[:count])
+        _put((ref[0], ref[1] + 2, 0), count.to_bytes(2, "big") + units)
+        return 1 if count == len(text) else 0
+
+
+_NARROW, _WIDE = _Texts(1), _Texts(2)
+
+
+def _len(t: _Texts, p: list[Ref]) -> int:
+    _put_int(p[1], len(t.text(p[0])))
     return 1
 
 
-def _find(p: list[Ref]) -> int:
-    text, wanted = _text(p[0]), _text(p[1])
+def _find(t: _Texts, p: list[Ref]) -> int:
+    text, wanted = t.text(p[0]), t.text(p[1])
     _put_int(p[2], text.find(wanted) + 1 if wanted else 0)
     return 1
 
 
-def _concat(p: list[Ref]) -> int:
-    return _put_text(p[2], _text(p[0]) + _text(p[1]))
+def _concat(t: _Texts, p: list[Ref]) -> int:
+    return t.put(p[2], t.text(p[0]) + t.text(p[1]))
 
 
-def _left(p: list[Ref]) -> int:
-    text, count = _text(p[0]), _int(p[1])
+def _left(t: _Texts, p: list[Ref]) -> int:
+    text, count = t.text(p[0]), _int(p[1])
     if count < 0:
-        _put_text(p[2], b"")
+        t.put(p[2], "")
         return 0
-    return _put_text(p[2], text[:count])
+    return t.put(p[2], text[:count])
 
 
-def _right(p: list[Ref]) -> int:
-    text, count = _text(p[0]), _int(p[1])
+def _right(t: _Texts, p: list[Ref]) -> int:
+    text, count = t.text(p[0]), _int(p[1])
     if count < 0:
-        _put_text(p[2], b"")
+        t.put(p[2], "")
         return 0
-    return _put_text(p[2], text[max(len(text) - count, 0) :] if count else b"")
+    return t.put(p[2], text[max(len(text) - count, 0) :] if count else "")
 
 
-def _mid(p: list[Ref]) -> int:
-    text, count, position = _text(p[0]), _int(p[1]), _int(p[2])
+def _mid(t: _Texts, p: list[Ref]) -> int:
+    text, count, position = t.text(p[0]), _int(p[1]), _int(p[2])
     if count <= 0 or not 1 <= position <= len(text):
-        _put_text(p[3], b"")
+        t.put(p[3], "")
         return 0
-    return _put_text(p[3], text[position - 1 : position - 1 + count])
+    return t.put(p[3], text[position - 1 : position - 1 + count])
 
 
-def _insert(p: list[Ref]) -> int:
-    first, second, position = _text(p[0]), _text(p[1]), _int(p[2])
+def _insert(t: _Texts, p: list[Ref]) -> int:
+    first, second, position = t.text(p[0]), t.text(p[1]), _int(p[2])
     if position < 0:
-        _put_text(p[3], b"")
+        t.put(p[3], "")
         return 0
-    return _put_text(p[3], first[:position] + second + first[position:])
+    return t.put(p[3], first[:position] + second + first[position:])
 
 
-def _delete(p: list[Ref]) -> int:
-    text, count, position = _text(p[0]), _int(p[1]), _int(p[2])
+def _delete(t: _Texts, p: list[Ref]) -> int:
+    text, count, position = t.text(p[0]), _int(p[1]), _int(p[2])
     if count < 0 or position < 0:
-        _put_text(p[3], b"")
+        t.put(p[3], "")
         return 0
     if count == 0 or position == 0 or position > len(text):
-        return _put_text(p[3], text)
-    return _put_text(p[3], text[: position - 1] + text[position - 1 + count :])
+        return t.put(p[3], text)
+    return t.put(p[3], text[: position - 1] + text[position - 1 + count :])
 
 
-def _replace(p: list[Ref]) -> int:
-    first, second, count, position = _text(p[0]), _text(p[1]), _int(p[2]), _int(p[3])
+def _replace(t: _Texts, p: list[Ref]) -> int:
+    first, second, count, position = t.text(p[0]), t.text(p[1]), _int(p[2]), _int(p[3])
     if count < 0 or position < 0:
-        _put_text(p[4], b"")
+        t.put(p[4], "")
         return 0
     if count == 0:
-        return _put_text(p[4], first)
+        return t.put(p[4], first)
     start = max(position, 1) - 1
     if start >= len(first):
-        return _put_text(p[4], first + second)
-    return _put_text(p[4], first[:start] + second + first[start + count :])
+        return t.put(p[4], first + second)
+    return t.put(p[4], first[:start] + second + first[start + count :])
 
 
-def _compare(test: Callable[[bytes, bytes], bool]) -> Body:
+def _compare(t: _Texts, test: Callable[[str, str], bool]) -> Body:
     def body(p: list[Ref]) -> int:
-        _put_bool(p[2], test(_text(p[0]), _text(p[1])))
+        _put_bool(p[2], test(t.text(p[0]), t.text(p[1])))
         return 1
 
     return body
+
+
+_STRING_BODIES: dict[str, Callable[[_Texts, list[Ref]], int]] = {
+    "LEN": _len,
+    "FIND": _find,
+    "CONCAT": _concat,
+    "LEFT": _left,
+    "RIGHT": _right,
+    "MID": _mid,
+    "INSERT": _insert,
+    "DELETE": _delete,
+    "REPLACE": _replace,
+}
+
+
+def _to_wide(p: list[Ref]) -> int:
+    return _WIDE.put(p[1], _NARROW.text(p[0]))
+
+
+def _to_narrow(p: list[Ref]) -> int:
+    """*Nasaq*: a character beyond latin-1 becomes ``?`` and BR = 0."""
+    text = _WIDE.text(p[0])
+    narrow = "".join(char if ord(char) < 256 else "?" for char in text)
+    done = _NARROW.put(p[1], narrow)
+    return done if narrow == text else 0
+
+
+def _string_bodies(t: _Texts, names: dict[str, str]) -> dict[str, Body]:
+    """The STRING functions and comparisons for one character width, under ``names``."""
+    found: dict[str, Body] = {
+        names[name]: functools.partial(body, t) for name, body in _STRING_BODIES.items()
+    }
+    for op in ("EQ", "NE", "GT", "GE", "LT", "LE"):
+        found[names[f"{op}_STRNG"]] = _compare(t, _ordered(op))
+    return found
 
 
 # -- conversions ----------------------------------------------------------------------------------
@@ -405,16 +475,12 @@ def _ordered(op: str) -> Callable[[Any, Any], bool]:
     }[op]
 
 
+_SAME = {name: name for name in WIDE}
 BODIES: dict[str, Body] = {
-    "LEN": _len,
-    "FIND": _find,
-    "CONCAT": _concat,
-    "LEFT": _left,
-    "RIGHT": _right,
-    "MID": _mid,
-    "INSERT": _insert,
-    "DELETE": _delete,
-    "REPLACE": _replace,
+    **_string_bodies(_NARROW, _SAME),
+    **_string_bodies(_WIDE, WIDE),  # WSTRING: LEN_WSTRING, EQ_WSTRING ...
+    "STRING_TO_WSTRING": _to_wide,
+    "WSTRING_TO_STRING": _to_narrow,
     "I_STRNG": _i_strng,
     "DI_STRNG": _di_strng,
     "R_STRNG": _r_strng,
@@ -428,9 +494,9 @@ BODIES: dict[str, Body] = {
     "DT_DATE": _dt_date,
     "DT_DAY": _dt_day,
     "DT_TOD": _dt_tod,
-    **{f"{op}_STRNG": _compare(_ordered(op)) for op in ("EQ", "NE", "GT", "GE", "LT", "LE")},
     **{f"{op}_DT": _dt_compare(_ordered(op)) for op in ("EQ", "NE", "GT", "GE", "LT", "LE")},
 }
+BODIES.update(LONG_BODIES)  # the S7-1200/1500 types' hidden FCs (``nasaq.cpu.long_library``)
 assert BODIES.keys() == FUNCTIONS.keys()
 
 

@@ -1,7 +1,9 @@
-"""CPU profiles: the sizes and limits that differ between an S7-300 and an S7-400.
+"""CPU profiles: the sizes and limits that differ between an S7-300, an S7-400 and an S7-1500.
 
-The numbers model a CPU 315-2 PN/DP (S7-300) and a CPU 416-2 (S7-400) closely enough for teaching
-and for testing real programs; COMPATIBILITY.md lists where they are rounded. ``Profile`` is an
+The numbers model a CPU 315-2 PN/DP (S7-300), a CPU 416-2 (S7-400) and a CPU 1516-3 PN/DP
+(S7-1500, standing for the S7-1200/1500 family) closely enough for teaching and for testing real
+programs; COMPATIBILITY.md lists where they are rounded. What the compilers accept per profile is
+``nasaq.lang.profiles``. ``Profile`` is an
 enum (``Profile("S7-300")`` works, as in scenario files) whose members expose their figures.
 """
 
@@ -50,12 +52,29 @@ _SPECS: dict[str, ProfileSpec] = {
         pq_updates_piq=False,
         ns_per_instruction=50,
     ),
+    # CPU 1516-3 PN/DP: 32 KB I/O address space (process images as large), 16 KB bit memory,
+    # 2048 S7 timers and counters, 24 nested blocks, 64 KB local data per priority class
+    # (rounded from the data sheet's per-class figure), 10 ns per bit instruction. Its STL
+    # emulates four accumulators, and T PQ does not write the process image there.
+    "S7-1500": ProfileSpec(
+        accumulators=4,
+        process_image_bytes=32768,
+        peripheral_bytes=32768,
+        marker_bytes=16384,
+        timers=2048,
+        counters=2048,
+        nesting_depth=24,
+        lstack_bytes=65536,
+        pq_updates_piq=False,
+        ns_per_instruction=10,
+    ),
 }
 
 
 class Profile(Enum):
     S7_300 = "S7-300"
     S7_400 = "S7-400"
+    S7_1500 = "S7-1500"
 
     @property
     def spec(self) -> ProfileSpec:

@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import TextIO
 
 from nasaq.diagnostics import Severity
+from nasaq.headless import project_file
 from nasaq.headless.sources import SourceError, compile_files, diagnostic_line
 from nasaq.lang.stl import ast
 from nasaq.lang.stl.format import format_block
@@ -63,11 +64,19 @@ def line_marks(lines: dict[str, list[str]], file: str) -> object:
     return comment
 
 
-def main(paths: list[Path], emit: str, out: TextIO | None = None, err: TextIO | None = None) -> int:
+def main(
+    paths: list[Path],
+    emit: str,
+    out: TextIO | None = None,
+    err: TextIO | None = None,
+    profile: str | None = None,
+) -> int:
+    """``profile`` None: the sources' cpu.properties decides (``nasaq run`` does the same), else
+    S7-300."""
     out = sys.stdout if out is None else out  # looked up now: a test may replace them
     err = sys.stderr if err is None else err
     try:
-        result = compile_files(paths)
+        result = compile_files(paths, profile=profile or project_file.profile_of(paths))
     except SourceError as exc:
         print(f"nasaq compile: {exc}", file=err)
         return 2

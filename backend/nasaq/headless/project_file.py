@@ -43,4 +43,14 @@ def problems(found: ReadProperties) -> list[str]:
     return [diagnostic_line(problem) for problem in found.diagnostics]
 
 
-__all__ = ["SourceError", "load", "locate", "problems"]
+def profile_of(sources: Sequence[Path]) -> str:
+    """The CPU family the sources are compiled for (``nasaq compile``): the file's profile (a bad
+    line keeps the default, as everywhere), S7-300 without a readable file."""
+    try:
+        found = load(sources)
+    except SourceError:
+        found = None
+    return found.properties.profile.value if found is not None else "S7-300"
+
+
+__all__ = ["SourceError", "load", "locate", "problems", "profile_of"]

@@ -64,6 +64,7 @@ class RunOptions:
     clock_memory: int | None = None  # the clock memory byte (MB n), None for none
     watchdog_ms: int = 150  # the cycle monitoring time
     retentive: Retentive | None = None  # None: MB 0-15, C 0-7
+    cyclic_periods: dict[int, int] = field(default_factory=dict)  # OB number: ms (cpu.properties)
     # Options the user gave (cycle_ms, profile, cold_restart, clock_memory): a cpu.properties
     # file does not override them.
     explicit: frozenset[str] = frozenset()
@@ -71,12 +72,8 @@ class RunOptions:
 
 def _with_project_file(options: RunOptions, err: TextIO) -> RunOptions | None:
     """``options`` completed from the sources' cpu.properties; None (problems printed) if the
-    file has errors."""
-    try:
-        found = project_file.load(options.sources)
-    except SourceError as exc:
-        print(f"nasaq run: {exc}", file=err)
-        return None
+    file has errors. A file that cannot be read raises ``SourceError``."""
+    found = project_file.load(options.sources)
     if found is None:
         return options
     if not found.ok:
@@ -93,6 +90,7 @@ def _with_project_file(options: RunOptions, err: TextIO) -> RunOptions | None:
         clock_memory=options.clock_memory if "clock_memory" in given else props.clock_memory,
         watchdog_ms=props.cycle_monitoring_ms,
         retentive=props.retentive,
+        cyclic_periods=dict(props.cyclic_periods),
     )
 
 
@@ -155,20 +153,29 @@ def snapshot(cpu: Cpu, cycles: int) -> dict[str, Any]:
 
 
 def execute(options: RunOptions, out: TextIO, err: TextIO) -> int:
-    """Runs the whole command; returns the exit status."""
-    completed = _with_project_file(options, err)
-    if completed is None:
+    """Runs the whole command; returns the exit status of every ``nasaq`` command
+    (``nasaq.cli``): 0 the scans ran, 1 the program has errors (it does not compile, its
+    cpu.properties has errors, or the CPU went to STOP on an error), 2 a usage error (a file
+    that cannot be read, an address or option the CPU does not have)."""
+    try:
+        completed = _with_project_file(options, err)
+    except SourceError as exc:
+        print(f"nasaq run: {exc}", file=err)
         return 2
+    if completed is None:
+        return 1
     options = completed
     try:
-        result = compile_files(options.sources, options.mnemonics, options.test_ops)
+        result = compile_files(
+            options.sources, options.mnemonics, options.test_ops, options.profile.value
+        )
     except SourceError as exc:
         print(f"nasaq run: {exc}", file=err)
         return 2
     for diagnostic in result.diagnostics:
         print(diagnostic_line(diagnostic), file=err)
     if not result.ok:
-        return 2
+        return 1  # as nasaq compile: the program has errors
     try:
         return _simulate(options, result.program, out, err)
     except Exception as exc:  # a simulator bug: STOP SIM500 in the usual shape, never a traceback
@@ -193,8 +200,9 @@ def _simulate(options: RunOptions, program: Program, out: TextIO, err: TextIO) -
             clock_memory_byte=options.clock_memory,
             watchdog_ms=options.watchdog_ms,
             retentive=options.retentive,
+            cyclic_periods=options.cyclic_periods,
         )
-    except ValueError as exc:  # a clock memory byte the CPU does not have
+    except ValueError as exc:  # a clock memory byte or a cyclic interrupt OB the CPU lacks
         print(f"nasaq run: {exc}", file=err)
         return 2
     for assignment in (*options.sets, *options.at):

@@ -31,10 +31,14 @@ def read_source(path: Path) -> SourceFile:
 
 
 def compile_files(
-    paths: Sequence[Path], mnemonics: str = "auto", test_ops: bool = False
+    paths: Sequence[Path], mnemonics: str = "auto", test_ops: bool = False, profile: str = "S7-300"
 ) -> CompileResult:
+    """Compiles ``paths`` for the CPU family ``profile`` (``nasaq.lang.profiles``)."""
     return compile_sources(
-        [read_source(path) for path in paths], mnemonics=mnemonics, test_ops=test_ops
+        [read_source(path) for path in paths],
+        mnemonics=mnemonics,
+        test_ops=test_ops,
+        profile=profile,
     )
 
 

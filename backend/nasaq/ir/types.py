@@ -27,8 +27,22 @@ ELEMENTARY_BITS: dict[str, int] = {
     "BLOCK_FC": 16,
     "BLOCK_DB": 16,
     "BLOCK_SDB": 16,
+    # S7-1200/1500 only (``nasaq.lang.profiles.S7_1500_TYPES``): the compilers refuse them for
+    # a classic CPU. In a standard (non-optimized) block they are big-endian like the others.
+    "SINT": 8,
+    "USINT": 8,
+    "UINT": 16,
+    "UDINT": 32,
+    "LINT": 64,
+    "ULINT": 64,
+    "LREAL": 64,
+    "LWORD": 64,
+    "LTIME": 64,
+    "WCHAR": 16,  # one UTF-16 code unit (``nasaq.lang.wide_text``)
 }
 TYPE_ALIASES = {"TOD": "TIME_OF_DAY", "DT": "DATE_AND_TIME"}
+# The 64-bit values no accumulator holds: moved as 8 bytes, computed by hidden library FCs.
+LONG_TYPES = frozenset({"LINT", "ULINT", "LREAL", "LWORD", "LTIME"})
 NUMBER_TYPES = frozenset({"TIMER", "COUNTER", "BLOCK_FB", "BLOCK_FC", "BLOCK_DB", "BLOCK_SDB"})
 # Types whose value fits an accumulator: what L/T/A/= may address directly.
 ACCU_TYPES = frozenset(

@@ -18,6 +18,7 @@ number from ``RELOCATED_BASE`` up that no block and no symbol uses (``nasaq.lang
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 from nasaq.lang.types import DataType, Elementary, StringType
@@ -125,6 +126,38 @@ _ALL = [
     *[_fc(n, name, title, BOOL, ("DT1", DT), ("DT2", DT)) for n, name, title in _DT_COMPARISONS],
 ]
 
+# WSTRING (TIA, S7-1200/1500): the STRING functions and comparisons again, with WSTRING where
+# they take or give a STRING, as hidden FCs ``LEN_WSTRING``, ``EQ_WSTRING`` ... (TIA Portal
+# overloads the names; ``wide_variant`` picks these when an input is a WSTRING).
+WSTRING = StringType(254, wide=True)
+WIDE_BASE = 660
+_WIDE_SOURCES = ("CONCAT", "DELETE", "FIND", "INSERT", "LEFT", "LEN", "MID", "REPLACE", "RIGHT")
+WIDE: dict[str, str] = {
+    **{name: f"{name}_WSTRING" for name in _WIDE_SOURCES},
+    **{name: name.replace("_STRNG", "_WSTRING") for _n, name, _t in _STRING_COMPARISONS},
+}
+
+
+def _widened(source: LibraryFunction, number: int) -> LibraryFunction:
+    def wide(data_type: DataType) -> DataType:
+        return WSTRING if data_type == STRING else data_type
+
+    inputs = tuple((name, wide(data_type)) for name, data_type in source.inputs)
+    title = f"{source.title} (WSTRING)"
+    return LibraryFunction(WIDE[source.name], number, inputs, wide(source.result), title)
+
+
+_BY_NAME = {function.name: function for function in _ALL}
+_ALL += [
+    _widened(_BY_NAME[name], number)
+    for number, name in enumerate(sorted(WIDE, key=WIDE.__getitem__), start=WIDE_BASE)
+]
+_ALL += [  # the conversions between the two (``nasaq.cpu.iec_library`` says how)
+    _fc(675, "STRING_TO_WSTRING", "STRING to WSTRING", WSTRING, ("IN", STRING)),
+    _fc(676, "WSTRING_TO_STRING", "WSTRING to STRING", STRING, ("IN", WSTRING)),
+]
+WIDE_FUNCTIONS = frozenset([*WIDE.values(), "STRING_TO_WSTRING", "WSTRING_TO_STRING"])
+
 FUNCTIONS: dict[str, LibraryFunction] = {function.name: function for function in _ALL}
 """The library FCs by name (upper case)."""
 BY_NUMBER: dict[int, LibraryFunction] = {function.number: function for function in _ALL}
@@ -147,5 +180,29 @@ DT_ARITHMETIC = {
 }
 
 
+WSTRING_COMPARE = {op: WIDE[name] for op, name in STRING_COMPARE.items()}
+
+
+def wide_variant(name: str, values: Iterable[object]) -> str:
+    """``name``'s WSTRING version when one of the input types ``values`` is a WSTRING."""
+    wide = WIDE.get(name)
+    if wide is not None and any(isinstance(v, StringType) and v.wide for v in values):
+        return wide
+    return name
+
+
 def function(name: str) -> LibraryFunction | None:
     return FUNCTIONS.get(name.upper())
+
+
+def _with_long_library() -> None:
+    """The hidden FCs of the S7-1200/1500 types (``nasaq.lang.long_library``) are library FCs
+    too: added to the program when called, their bodies Python."""
+    from nasaq.lang.long_library import functions
+
+    for found in functions():
+        FUNCTIONS[found.name] = found
+        BY_NUMBER[found.number] = found
+
+
+_with_long_library()

@@ -2,9 +2,10 @@
 
 Rules, as STEP 7 lays out DBs, instance DBs and the L stack:
 - BOOLs are packed: each takes the next free bit; consecutive BOOLs share a byte.
-- BYTE and CHAR start on the next byte boundary.
+- BYTE and CHAR (and the S7-1500's SINT and USINT) start on the next byte boundary.
 - Every other type (WORD, INT, DINT, REAL, TIME, S5TIME, DATE, TOD, DT, STRING, ARRAY, STRUCT,
-  UDT, FB multi-instance, POINTER, ANY) starts on an even byte.
+  UDT, FB multi-instance, POINTER, ANY; the S7-1500's UINT, UDINT and the 8-byte LINT, ULINT,
+  LREAL, LWORD, LTIME as TIA lays out a standard block) starts on an even byte.
 - STRUCT (and UDT, and FB instance) sizes are rounded up to an even number of bytes; a STRING
   or an ARRAY also occupies whole words, so whatever follows starts on an even byte again.
 - ARRAY elements: BOOLs are packed bits, BYTE/CHAR one byte each, every other element starts on
@@ -88,8 +89,11 @@ def _is_bool(data_type: DataType) -> bool:
     return isinstance(data_type, Elementary) and data_type.name == "BOOL"
 
 
+_BYTE_TYPES = frozenset({"BYTE", "CHAR", "SINT", "USINT"})
+
+
 def _is_byte(data_type: DataType) -> bool:
-    return isinstance(data_type, Elementary) and data_type.name in ("BYTE", "CHAR")
+    return isinstance(data_type, Elementary) and data_type.name in _BYTE_TYPES
 
 
 class Layout:
@@ -106,7 +110,7 @@ class Layout:
         if isinstance(data_type, Elementary):
             return data_type.bits
         if isinstance(data_type, StringType):
-            return _even((data_type.length + 2) * 8)
+            return _even((data_type.length + 2) * data_type.char_bytes * 8)
         if isinstance(data_type, ArrayType):
             return _even(data_type.count * self.stride(data_type.element))
         if isinstance(data_type, StructType):

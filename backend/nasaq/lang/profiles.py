@@ -15,6 +15,30 @@ PROFILES: tuple[ProfileName, ...] = ("S7-300", "S7-400", "S7-1500")
 DEFAULT_PROFILE: ProfileName = "S7-300"
 
 
+# The elementary types only the S7-1200/1500 family has (``nasaq.ir.types`` gives their sizes).
+# Declared under a classic profile they are SCL500/STL500 at the declaration.
+S7_1500_TYPES = frozenset(
+    {
+        "SINT",
+        "USINT",
+        "UINT",
+        "UDINT",
+        "LINT",
+        "ULINT",
+        "LREAL",
+        "LWORD",
+        "LTIME",
+        "WCHAR",
+        "WSTRING",
+    }
+)
+
+
 def is_s7_1500(profile: str) -> bool:
     """True for the S7-1200/1500 family."""
     return profile == "S7-1500"
+
+
+def needs_s7_1500(type_name: str, profile: str) -> bool:
+    """Whether the elementary type ``type_name`` is refused under ``profile``."""
+    return type_name.upper() in S7_1500_TYPES and not is_s7_1500(profile)

@@ -31,7 +31,19 @@ class Elementary:
 
 @dataclass(frozen=True, slots=True)
 class StringType:
+    """STRING[n] (1-byte characters) or, ``wide``, WSTRING[n] (2-byte UTF-16 code units): the
+    maximum and the current length, each one character wide, then n characters."""
+
     length: int = 254
+    wide: bool = False
+
+    @property
+    def char_bytes(self) -> int:
+        return 2 if self.wide else 1
+
+    @property
+    def name(self) -> str:
+        return "WSTRING" if self.wide else "STRING"
 
 
 @dataclass(frozen=True, slots=True)
@@ -77,6 +89,8 @@ def elementary(name: str) -> Elementary | StringType | None:
     upper = ALIASES.get(name.upper(), name.upper())
     if upper == "STRING":
         return StringType()
+    if upper == "WSTRING":
+        return StringType(wide=True)
     return Elementary(upper) if upper in ELEMENTARY_BITS else None
 
 
@@ -93,7 +107,7 @@ def type_text(data_type: DataType) -> str:
     if isinstance(data_type, Elementary):
         return data_type.name
     if isinstance(data_type, StringType):
-        return f"STRING[{data_type.length}]"
+        return f"{data_type.name}[{data_type.length}]"
     if isinstance(data_type, ArrayType):
         dims = ", ".join(f"{low}..{high}" for low, high in data_type.dims)
         return f"ARRAY[{dims}] OF {type_text(data_type.element)}"

@@ -114,9 +114,8 @@ def check_main(targets: Sequence[str], default: Path, out: TextIO) -> int:
     if total == 0 and not broken:
         print("nasaq lessons check: no lessons found", file=out)
         return 2
-    if counts["error"] or broken:
-        return 2
-    return 1 if counts["fail"] else 0
+    # 1 for a lesson that fails or is broken (the course has errors), as every nasaq command
+    return 1 if counts["fail"] or counts["error"] or broken else 0
 
 
 def lint_main(targets: Sequence[str], default: Path, out: TextIO) -> int:
@@ -144,4 +143,4 @@ def list_main(default: Path, language: str, out: TextIO) -> int:
             print(f"  {meta.id:<8} {meta.works_in:<4} {meta.form:<14} {name}{plant}", file=out)
     for problem in course.problems:
         print(problem.text(), file=out)
-    return 2 if course.problems else 0
+    return 1 if course.problems else 0

@@ -10,6 +10,7 @@ from typing import Any
 
 from nasaq.diagnostics.phrases import phrase
 from nasaq.ir import Area, Block, BlockKind, Direct, Program, Variable
+from nasaq.lang.stl.compiler import SCL_SUFFIXES
 from nasaq.monitor.errors import MonitorError
 from nasaq.monitor.protocol import Location
 from nasaq.monitor.values import ELEMENTARY_BITS, decode
@@ -101,7 +102,8 @@ def block_info(block: Block) -> BlockInfo:
     starts = [k == 0 or lines[k] != lines[k - 1] or k in targets for k in range(len(code))]
     file = sorted(files)[0] if files else None
     suffix = file.lower().rsplit(".", 1)[-1] if file is not None and "." in file else ""
-    language = suffix if suffix in ("scl", "lad", "fbd", "graph") else "stl"
+    language = "scl" if f".{suffix}" in SCL_SUFFIXES else suffix
+    language = language if language in ("scl", "lad", "fbd", "graph") else "stl"
     info = BlockInfo(block, block_name(block), language, file, lines, networks, starts)
     info.slots = [
         slot for slot in _slots(block) if not (language == "scl" and _HIDDEN.match(slot.name))

@@ -18,8 +18,10 @@ from nasaq.monitor.errors import MonitorError
 MAX_DB_BYTES = 16 * 1024 * 1024
 
 
-def compile_download(sources: list[SourceFile]) -> Program:
-    result = compile_sources(sources)
+def compile_download(sources: list[SourceFile], profile: str = "S7-300") -> Program:
+    """The program of a download, compiled for the CPU family ``profile``; MonitorError when
+    it does not compile."""
+    result = compile_sources(sources, profile=profile)
     errors = [d for d in result.diagnostics if d.severity.value == "error"]
     if errors:
         first = errors[0]

@@ -141,7 +141,7 @@ class Session:
         self.started_at = time.time()
         self.sources = list(sources)
         self.profile = profile
-        self.program = compile_download(self.sources)
+        self.program = compile_download(self.sources, profile.value)
         self.lad = lad_blocks(self.sources, self.program)
         self.graphs = graph_blocks(self.sources, self.program)
         # The project's cpu.properties (if any) sets the rest; the API resolved profile and cycle.
@@ -478,12 +478,13 @@ class Session:
             raise MonitorError(
                 "MON607", action=phrase("act_download"), reason=phrase("switch_to_stop")
             )
-        program = compile_download(sources)
-        plant = plant_of(sources)  # a bad plant file refuses the download, as a bad program does
-        cycle_ms, properties = self.cpu.cycle_ms, self.properties
+        cycle_ms, properties, profile = self.cpu.cycle_ms, self.properties, self.profile
         if find(_pairs(sources)) is not None:  # a download carries the CPU properties too
             properties = properties_of(_pairs(sources)).properties
-            self.profile, cycle_ms = properties.profile, properties.cycle_ms
+            profile, cycle_ms = properties.profile, properties.cycle_ms
+        program = compile_download(sources, profile.value)  # for the profile it will run on
+        plant = plant_of(sources)  # a bad plant file refuses the download, as a bad program does
+        self.profile = profile
         cpu = _cpu(program, properties, self.profile, cycle_ms)
         self.properties = properties
         changed = carry_over(self.program, self.cpu, program, cpu)

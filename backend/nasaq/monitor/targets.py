@@ -76,9 +76,9 @@ _HEAD = re.compile(r'"(?P<symbol>[^"]+)"|DB\s*(?P<db>\d+)\b|(?P<name>[A-Za-z_]\w
 _SELECTOR = re.compile(
     r'\s*(?:\.\s*(?:"(?P<quoted>[^"]+)"|(?P<name>[A-Za-z_]\w*))|\[(?P<indices>[^\]]*)\])'
 )
-_STRING = re.compile(r"^STRING\s*\[\s*(\d+)\s*\]$", re.IGNORECASE)
+_STRING = re.compile(r"^(W?)STRING\s*\[\s*(\d+)\s*\]$", re.IGNORECASE)  # W: WSTRING
 # FB IN_OUT parameters of these types hold a pointer to the actual parameter, not its value.
-_BY_REFERENCE = re.compile(r"^(?:ARRAY|STRING|STRUCT|UDT|DATE_AND_TIME$|DT$)", re.IGNORECASE)
+_BY_REFERENCE = re.compile(r"^(?:ARRAY|W?STRING|STRUCT|UDT|DATE_AND_TIME$|DT$)", re.IGNORECASE)
 
 Selector = str | tuple[int, ...]
 
@@ -385,7 +385,7 @@ class _Resolver:
             bits = ELEMENTARY_BITS[kind]
             return (bits if bits <= 8 else _even(bits)), bits, []
         if string := _STRING.match(element_type):
-            size = _even((int(string[1]) + 2) * 8)
+            size = _even((int(string[2]) + 2) * (16 if string[1] else 8))
             return size, size, []
         udt = re.match(r"^UDT\s*(\d+)$", element_type, re.IGNORECASE)
         block = self.program.get(BlockKind.UDT, int(udt[1])) if udt else None

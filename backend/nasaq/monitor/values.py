@@ -45,6 +45,8 @@ def decode(type_name: str, pattern: int | None) -> Value:
         return bool(pattern & 1)
     if type_name == "INT":
         return signed(pattern, 16)
+    if type_name == "SINT":  # (USINT, UINT, UDINT are the unsigned pattern itself)
+        return signed(pattern, 8)
     if type_name in ("DINT", "TIME"):
         return signed(pattern, 32)
     if type_name == "REAL":

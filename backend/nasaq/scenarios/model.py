@@ -168,7 +168,7 @@ class Scenario(BaseModel):
     sources: list[str] | None = Field(default=None, min_length=1)
     cycle_ms: float = Field(default=10.0, gt=0, le=60_000)
     mnemonics: Literal["auto", "en", "de"] = "auto"
-    profile: Literal["S7-300", "S7-400"] = "S7-300"
+    profile: Literal["S7-300", "S7-400", "S7-1500"] = "S7-300"
     # A plant in closed loop; "none" runs without the lesson's plant; omitted: the caller's.
     plant: PlantConfig | Literal["none"] | None = None
     expect_diagnostics: list[ExpectedDiagnostic] | None = Field(default=None, min_length=1)

@@ -112,7 +112,10 @@ def run_loaded(
     except SourceError as exc:
         result.error = str(exc)
         return result
-    compiled = compile_sources(files, mnemonics=scenario.mnemonics)
+    profile = scenario.profile  # the scenario's own, else the properties file's, as below
+    if found is not None and "profile" not in scenario.model_fields_set:
+        profile = found.properties.profile.value
+    compiled = compile_sources(files, mnemonics=scenario.mnemonics, profile=profile)
     result.problems = list(compiled.diagnostics)
     result.diagnostics = [diagnostic_line(d) for d in compiled.diagnostics]
     if scenario.expect_diagnostics is not None:

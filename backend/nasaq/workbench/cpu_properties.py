@@ -5,7 +5,7 @@ The file is UTF-8 text of ``key = value`` lines; ``#`` starts a comment (a whole
 of one), blank lines are ignored, keys are case-insensitive, a key left out keeps its default::
 
     # Nasaq CPU properties
-    profile = S7-300              # S7-300 or S7-400
+    profile = S7-300              # S7-300, S7-400 or S7-1500 (the S7-1200/1500 family)
     cycle_monitoring_time = 150   # ms, 1 to 6000: the cycle watchdog (SIM501)
     cycle_time = 10               # ms, 1 to 6000: the virtual time of one scan
     clock_memory = MB100          # MB n, or none
@@ -13,6 +13,7 @@ of one), blank lines are ignored, keys are case-insensitive, a key left out keep
     retentive_timers = 0          # T 0 ... (none)
     retentive_counters = 8        # C 0 ... C 7
     startup = warm                # warm or cold
+    cyclic_interrupt_OB35 = 100   # ms, 1 to 60000: the cycle time of a cyclic interrupt OB
 
 - ``cycle_time`` is the simulator's scan period (what session options call ``cycle_ms``), as
   STEP 7's "minimum cycle time": like STEP 7, it must not exceed the cycle monitoring time.
@@ -22,6 +23,9 @@ of one), blank lines are ignored, keys are case-insensitive, a key left out keep
   run``, ``nasaq test``); the toolbar's explicit warm/cold restart buttons still do what they
   say. ``hot`` (an S7-400's hot restart, OB101, resuming the interrupted scan) is refused with
   PRJ906: the simulator does not model it.
+- ``cyclic_interrupt_OB<n>`` is the "cycle time" of cyclic interrupt OB n (default 100 ms):
+  OB35 on S7-300/400 (the one the simulator runs there), OB30-OB38 and OB123 up on S7-1500
+  (``nasaq.cpu.obs``). A number the profile has no cyclic interrupt for is PRJ902.
 - Limits come from the profile (MB, T, C counts); the defaults are an S7-300's.
 
 Reading never raises: a bad line gives one diagnostic (PRJ9xx, with its line and column) and
@@ -37,6 +41,7 @@ from dataclasses import dataclass, field
 from typing import Any, Literal
 
 from nasaq.cpu import Profile, Retentive
+from nasaq.cpu.obs import MAX_PERIOD_MS, is_cyclic_number
 from nasaq.diagnostics.catalogue import render
 from nasaq.diagnostics.model import Diagnostic, Severity, Span
 
@@ -57,6 +62,16 @@ KEYS = (
 _LINE = re.compile(r"\s*([A-Za-z_][A-Za-z0-9_]*)\s*[=:]\s*(.*?)\s*")
 _MS = re.compile(r"(\d+)\s*(?:ms)?", re.IGNORECASE)
 _MARKER_BYTE = re.compile(r"(?:MB\s*)?(\d+)", re.IGNORECASE)
+_CYCLIC_KEY = re.compile(r"cyclic_interrupt_ob(\d+)")  # matched on the lower-cased key
+_CYCLIC_KEYS = {
+    Profile.S7_1500: "cyclic_interrupt_OB30 … cyclic_interrupt_OB38, cyclic_interrupt_OB123 …"
+}
+# S7-1200 and "S7-1200/1500" name the one profile of that family (``nasaq.lang.profiles``).
+_PROFILE_NAMES = {p.value.lower(): p for p in Profile} | {
+    "s7-1200": Profile.S7_1500,
+    "s7-1200/1500": Profile.S7_1500,
+}
+_PROFILE_CHOICES = " | ".join(p.value for p in Profile)
 
 
 @dataclass(frozen=True, slots=True)
@@ -67,6 +82,7 @@ class CpuProperties:
     clock_memory: int | None = None
     retentive: Retentive = field(default_factory=Retentive)
     startup: Startup = "warm"
+    cyclic_periods: tuple[tuple[int, int], ...] = ()  # (OB number, ms) of the lines that set one
 
     def cpu_options(self) -> dict[str, Any]:
         """Keyword arguments of :class:`nasaq.cpu.Cpu` (besides program and cycle time)."""
@@ -75,6 +91,7 @@ class CpuProperties:
             "watchdog_ms": self.cycle_monitoring_ms,
             "clock_memory_byte": self.clock_memory,
             "retentive": self.retentive,
+            "cyclic_periods": dict(self.cyclic_periods),
         }
 
     def as_json(self) -> dict[str, Any]:
@@ -114,6 +131,7 @@ def read_properties(text: str, file: str = FILE_NAME) -> ReadProperties:
     values: dict[str, Any] = {}
     lines: dict[str, int] = {}
     columns: dict[str, int] = {}  # where each value starts
+    key_columns: dict[str, int] = {}
     problems: list[Diagnostic] = []
 
     def problem(code: str, line: int, column: int, **params: Any) -> None:
@@ -130,13 +148,14 @@ def read_properties(text: str, file: str = FILE_NAME) -> ReadProperties:
             problem("PRJ901", number, column, text=body.strip())
             continue
         key, value = match.group(1).lower(), match.group(2)
-        if key not in KEYS:
+        if key not in KEYS and _CYCLIC_KEY.fullmatch(key) is None:
             problem("PRJ902", number, column, key=match.group(1), keys=", ".join(KEYS))
             continue
         if key in lines:
             problem("PRJ903", number, column, key=key, first=lines[key])
             continue
         lines[key] = number
+        key_columns[key] = column
         value_column = columns[key] = match.start(2) + 1
         parsed = _value(key, value)
         if isinstance(parsed, tuple):
@@ -156,6 +175,15 @@ def read_properties(text: str, file: str = FILE_NAME) -> ReadProperties:
         if key in values and values[key] is not None and values[key] > limit:
             value = values.pop(key)
             problem("PRJ905", lines[key], columns[key], key=key, value=value, low=0, high=limit)
+    periods: list[tuple[int, int]] = []
+    for key in [k for k in values if _CYCLIC_KEY.fullmatch(k)]:
+        ms = values.pop(key)
+        number = int(key.removeprefix("cyclic_interrupt_ob"))
+        if is_cyclic_number(number, profile):
+            periods.append((number, ms))
+            continue
+        known = ", ".join((*KEYS, _CYCLIC_KEYS.get(profile, "cyclic_interrupt_OB35")))
+        problem("PRJ902", lines[key], key_columns[key], key=key, keys=known)
     monitoring = values.get("cycle_monitoring_time", 150)
     if values.get("cycle_time", 10) > monitoring:
         key = "cycle_time" if "cycle_time" in lines else "cycle_monitoring_time"
@@ -172,6 +200,7 @@ def read_properties(text: str, file: str = FILE_NAME) -> ReadProperties:
             values.get("retentive_counters", Retentive().counters),
         ),
         startup=values.get("startup", "warm"),
+        cyclic_periods=tuple(sorted(periods)),
     )
     return ReadProperties(properties, problems)
 
@@ -180,8 +209,8 @@ def _value(key: str, text: str) -> Any:
     """The value of ``key`` written as ``text``, or (code, params) of the problem."""
     word = text.strip()
     if key == "profile":
-        found = {p.value.lower(): p for p in Profile}.get(word.lower().replace(" ", ""))
-        return found if found is not None else ("PRJ904", {"expected": "S7-300 | S7-400"})
+        found = _PROFILE_NAMES.get(word.lower().replace(" ", ""))
+        return found if found is not None else ("PRJ904", {"expected": _PROFILE_CHOICES})
     if key == "startup":
         lowered = word.lower().removesuffix(" restart")
         if lowered in ("warm", "cold"):
@@ -194,6 +223,12 @@ def _value(key: str, text: str) -> Any:
             return None
         match = _MARKER_BYTE.fullmatch(word)
         return int(match.group(1)) if match else ("PRJ904", {"expected": "MB n | none"})
+    if _CYCLIC_KEY.fullmatch(key):
+        match = _MS.fullmatch(word)
+        if match is None:
+            return ("PRJ904", {"expected": f"1 … {MAX_PERIOD_MS}"})
+        ms = int(match.group(1))
+        return ms if 1 <= ms <= MAX_PERIOD_MS else ("PRJ905", {"low": 1, "high": MAX_PERIOD_MS})
     if key in ("cycle_monitoring_time", "cycle_time"):
         match = _MS.fullmatch(word)
         if match is None:

@@ -39,7 +39,7 @@ MAX_ELEMENTS = 256  # larger arrays stay one row: a DB editor lists, it does not
 
 _STRING = re.compile(r"^STRING\s*(?:\[\s*(\d+)\s*\])?$", re.IGNORECASE)
 _WATCHABLE = ACCU_TYPES | NUMBER_TYPES  # what a watch table resolves to one value
-_BY_REFERENCE = re.compile(r"^(?:ARRAY|STRING|STRUCT|UDT|DATE_AND_TIME$)")  # IN_OUT: a pointer
+_BY_REFERENCE = re.compile(r"^(?:ARRAY|W?STRING|STRUCT|UDT|DATE_AND_TIME$)")  # IN_OUT: a pointer
 _EPOCH = datetime.date(1990, 1, 1)
 
 
@@ -203,6 +203,13 @@ def _offset(bits: int) -> str:
 def _actual(kind: str, offset_bits: int, size_bits: int, data: bytes) -> str | None:
     """The compiled DB's value of an elementary member as a STEP 7 constant."""
     start = offset_bits // 8
+    if kind.startswith("WSTRING"):  # WORD maximum, WORD length, UTF-16 (``lang.wide_text``)
+        if start + 4 > len(data):
+            return None
+        room = int.from_bytes(data[start : start + 2], "big")
+        length = min(int.from_bytes(data[start + 2 : start + 4], "big"), room)
+        units = data[start + 4 : start + 4 + 2 * length]
+        return "'" + units.decode("utf-16-be", errors="replace") + "'"
     string = _STRING.match(kind)
     if string is not None:
         if start + 2 > len(data):
@@ -232,6 +239,9 @@ def _constant(kind: str, pattern: int, bits: int) -> str:
         return f"DW#16#{pattern:08X}"
     if kind == "CHAR":
         return "'" + chr(pattern) + "'" if 32 <= pattern < 127 else f"B#16#{pattern:02X}"
+    if kind == "WCHAR":  # a UTF-16 code unit (``lang.wide_text``)
+        printable = chr(pattern).isprintable() and not 0xD800 <= pattern <= 0xDFFF
+        return f"WCHAR#'{chr(pattern)}'" if printable else f"WCHAR#16#{pattern:04X}"
     if kind == "TIME":
         return "T#" + ("-" if signed < 0 else "") + _duration(abs(signed))
     if kind == "S5TIME":

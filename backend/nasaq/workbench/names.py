@@ -15,9 +15,9 @@ from __future__ import annotations
 import re
 from typing import Literal
 
+from nasaq.lang.limits import MAX_SOURCE_CHARS
 from nasaq.lang.stl.compiler import (
     LAD_SUFFIXES,
-    MAX_SOURCE_CHARS,
     PLANT_SUFFIXES,
     SCL_SUFFIXES,
     STL_SUFFIXES,

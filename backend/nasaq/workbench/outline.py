@@ -20,11 +20,11 @@ from collections import OrderedDict
 from pydantic import BaseModel, Field
 
 from nasaq.ir import Program
-from nasaq.lang.stl import SourceFile, compile_sources
 from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES, SymbolTable, read_symbol_table
 from nasaq.workbench.graph_outline import OutlineSequencer, graph_charts
 from nasaq.workbench.members import Member, block_members
 from nasaq.workbench.names import BlockLanguage, language_of
+from nasaq.workbench.project_compile import compile_project
 from nasaq.workbench.tree import KindName, user_blocks
 
 _COMMENT = re.compile(r"//(.*)$")
@@ -137,7 +137,7 @@ def _symbols(sources: list[tuple[str, str]]) -> list[OutlineSymbol]:
 
 
 def _outline(sources: list[tuple[str, str]]) -> ProjectOutline:
-    result = compile_sources(SourceFile(name, text) for name, text in sources)
+    result = compile_project(sources)
     return ProjectOutline(symbols=_symbols(sources), blocks=_blocks(result.program, dict(sources)))
 
 

@@ -25,11 +25,12 @@ from pydantic import BaseModel, Field
 
 from nasaq.diagnostics import Severity
 from nasaq.ir import Block, BlockKind, Program
-from nasaq.lang.stl import SourceFile, compile_sources
 from nasaq.lang.stl.addresses import AddressError, parse_address
+from nasaq.lang.stl.compiler import SCL_SUFFIXES
 from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES, SymbolTable, read_symbol_table
 from nasaq.workbench.members import block_members
 from nasaq.workbench.names import language_of
+from nasaq.workbench.project_compile import compile_project
 from nasaq.workbench.tree import header_line, header_lines
 from nasaq.workbench.xref import XrefError, _Names, _split_member
 
@@ -69,7 +70,7 @@ class _Token:
 
 def _tokens(text: str, suffix: str) -> Iterator[_Token]:
     """Quoted names and words of a source, outside comments, strings and title lines."""
-    scl = suffix == ".scl"
+    scl = suffix in SCL_SUFFIXES
     prose = suffix in (".awl", ".stl", ".lad", ".fbd", ".graph")
     index, size = 0, len(text)
     line_start = True
@@ -181,7 +182,7 @@ def check_symbol_name(name: str) -> None:
 
 
 def _compile(sources: list[tuple[str, str]]) -> tuple[Program, int]:
-    result = compile_sources(SourceFile(name, text) for name, text in sources)
+    result = compile_project(sources)
     errors = sum(1 for item in result.diagnostics if item.severity == Severity.ERROR)
     return result.program, errors
 

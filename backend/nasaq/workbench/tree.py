@@ -16,9 +16,9 @@ from pydantic import BaseModel, Field
 
 from nasaq.diagnostics import Diagnostic
 from nasaq.ir import Block, BlockKind
-from nasaq.lang.stl import SourceFile, compile_sources
 from nasaq.plants.plant_file import plant_file_problems
 from nasaq.workbench.names import BlockLanguage, language_of
+from nasaq.workbench.project_compile import compile_project
 
 KindName = Literal["OB", "FB", "FC", "DB", "UDT"]
 BLOCK_KINDS: dict[BlockKind, KindName] = {
@@ -105,7 +105,7 @@ def user_blocks(blocks: Iterable[Block], texts: dict[str, str]) -> list[tuple[Bl
 
 def build(sources: list[tuple[str, str]]) -> ProjectBuild:
     """Compiles the files together. Slow for big projects: call it in a thread."""
-    result = compile_sources(SourceFile(name, text) for name, text in sources)
+    result = compile_project(sources)
     blocks = [entry for _, entry in user_blocks(result.program.blocks.values(), dict(sources))]
     plant = plant_file_problems(sources)  # the .plant file, which the compiler skips
     return ProjectBuild(blocks=blocks, diagnostics=result.diagnostics + plant)

@@ -47,9 +47,9 @@ from nasaq.ir import (
     Variable,
 )
 from nasaq.lang.lad.compile import LoweredFile, lower_file
-from nasaq.lang.stl import SourceFile, compile_sources
 from nasaq.lang.stl.addresses import AddressError, parse_address
 from nasaq.workbench.names import language_of
+from nasaq.workbench.project_compile import compile_project
 from nasaq.workbench.tree import BLOCK_KINDS
 
 Access = Literal[
@@ -440,7 +440,7 @@ def _entry(use: _Use, names: _Names, exact: bool) -> XrefEntry:
 
 
 def _compiled(sources: list[tuple[str, str]]) -> Program:
-    return compile_sources(SourceFile(name, text) for name, text in sources).program
+    return compile_project(sources).program
 
 
 def references(sources: list[tuple[str, str]], target: str) -> XrefResult:

@@ -22,7 +22,7 @@ export interface SessionOut {
   project_id: number | null;
   /** That project's current name. */
   project_name: string | null;
-  profile: 'S7-300' | 'S7-400';
+  profile: 'S7-300' | 'S7-400' | 'S7-1500';
   /** When it was created (ISO 8601, UTC). */
   started_at: string;
   age_seconds: number;

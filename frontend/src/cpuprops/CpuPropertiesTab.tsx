@@ -248,6 +248,7 @@ export function CpuPropertiesTab({ tab, active }: { tab: SourceTab; active: bool
           <select id={`${tab.id}-profile`} className="input" dir="ltr" value={shown('profile')} onChange={(event) => void change('profile', event.target.value)}>
             <option value="S7-300">S7-300</option>
             <option value="S7-400">S7-400</option>
+            <option value="S7-1500">S7-1200/1500</option>
           </select>,
         )}
         {field('startup', t('cpuProps.startup'), t('cpuProps.startupHint'), (

@@ -21,7 +21,7 @@ export type PropertyKey = (typeof PROPERTY_KEYS)[number];
 
 /** The values the server read from the text (`POST /api/cpu-properties/check`). */
 export interface CpuProperties {
-  profile: 'S7-300' | 'S7-400';
+  profile: 'S7-300' | 'S7-400' | 'S7-1500';
   cycle_monitoring_time: number;
   cycle_time: number;
   clock_memory: number | null;

@@ -5,7 +5,8 @@ export function languageOfFile(name: string): SourceLanguage | null {
   const dot = name.lastIndexOf('.');
   const suffix = dot >= 0 ? name.slice(dot).toLowerCase() : '';
   if (suffix === '.awl' || suffix === '.stl') return 'stl';
-  if (suffix === '.scl') return 'scl';
+  // TIA Portal exports a DB as `.db` and a PLC data type as `.udt`, both in SCL syntax.
+  if (suffix === '.scl' || suffix === '.db' || suffix === '.udt') return 'scl';
   if (suffix === '.lad') return 'lad';
   if (suffix === '.fbd') return 'fbd';
   if (suffix === '.graph') return 'graph';

@@ -6,7 +6,7 @@ import { sourceExample } from './examples';
 export type StartLanguage = 'stl' | 'scl';
 
 const SUFFIX: Record<StartLanguage, 'awl' | 'scl'> = { stl: 'awl', scl: 'scl' };
-const SOURCE = /\.(awl|stl|scl|lad|fbd|graph)$/i;
+const SOURCE = /\.(awl|stl|scl|db|udt|lad|fbd|graph)$/i;
 
 export interface CreatedSource {
   info: FileInfo;

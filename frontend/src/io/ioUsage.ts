@@ -28,7 +28,7 @@ export interface IoUsage {
 // An I/O address in code: `I 0.0`, `E0.1`, `QB 4`, `AW4`, `%Q4.0`, `PIW 256`, `PEW256`. A bit
 // needs its `.n`, a byte/word/double word its size letter, so `E001:` or `A` (AND) never count.
 const IN_CODE = /(?<![\w#.%"'])%?(P?)([IEQA])(?:([BWD])[ \t]*(\d+)|[ \t]*(\d+)\.[0-7])(?![\w.])/gi;
-const CODE_FILE = /\.(?:awl|stl|scl|lad|fbd|graph)$/i;
+const CODE_FILE = /\.(?:awl|stl|scl|db|udt|lad|fbd|graph)$/i;
 
 interface Access {
   input: boolean;

@@ -481,6 +481,9 @@ export const SYSTEM_BLOCKS: readonly SystemBlock[] = [
   { kind: 'SFB', number: 3, name: 'TP', pins: [{ section: 'IN', name: 'IN', type: 'BOOL' }, { section: 'IN', name: 'PT', type: 'TIME' }, { section: 'OUT', name: 'Q', type: 'BOOL' }, { section: 'OUT', name: 'ET', type: 'TIME' }] },
   { kind: 'SFB', number: 4, name: 'TON', pins: [{ section: 'IN', name: 'IN', type: 'BOOL' }, { section: 'IN', name: 'PT', type: 'TIME' }, { section: 'OUT', name: 'Q', type: 'BOOL' }, { section: 'OUT', name: 'ET', type: 'TIME' }] },
   { kind: 'SFB', number: 5, name: 'TOF', pins: [{ section: 'IN', name: 'IN', type: 'BOOL' }, { section: 'IN', name: 'PT', type: 'TIME' }, { section: 'OUT', name: 'Q', type: 'BOOL' }, { section: 'OUT', name: 'ET', type: 'TIME' }] },
+  { kind: 'SFB', number: 1000, name: 'R_TRIG', pins: [{ section: 'IN', name: 'CLK', type: 'BOOL' }, { section: 'OUT', name: 'Q', type: 'BOOL' }] },
+  { kind: 'SFB', number: 1001, name: 'F_TRIG', pins: [{ section: 'IN', name: 'CLK', type: 'BOOL' }, { section: 'OUT', name: 'Q', type: 'BOOL' }] },
+  { kind: 'SFC', number: 1, name: 'READ_CLK', pins: [{ section: 'OUT', name: 'RET_VAL', type: 'INT' }, { section: 'OUT', name: 'CDT', type: 'DATE_AND_TIME' }] },
   { kind: 'SFC', number: 46, name: 'STP', pins: [] },
   { kind: 'SFC', number: 64, name: 'TIME_TCK', pins: [{ section: 'OUT', name: 'RET_VAL', type: 'TIME' }] },
 ];

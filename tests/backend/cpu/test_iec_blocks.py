@@ -95,7 +95,10 @@ def test_instance_layouts_are_those_of_the_s7_300_400() -> None:
     def offsets(number: int) -> dict[str, tuple[int, int]]:
         return {v.name: divmod(v.offset_bits, 8) for v in iec_blocks.INTERFACES[number]}
 
-    assert iec_blocks.INSTANCE_BYTES == {0: 10, 1: 10, 2: 10, 3: 22, 4: 22, 5: 22}
+    assert iec_blocks.INSTANCE_BYTES == {0: 10, 1: 10, 2: 10, 3: 22, 4: 22, 5: 22} | {
+        1000: 6,  # R_TRIG and F_TRIG (issue 20): CLK, Q, M a word each
+        1001: 6,
+    }
     timer = {
         "IN": (0, 0),
         "PT": (2, 0),
@@ -121,7 +124,7 @@ def test_instance_layouts_are_those_of_the_s7_300_400() -> None:
         "CUO": (8, 0),
         "CDO": (8, 1),
     }
-    assert sorted(iec_blocks.BODIES) == [0, 1, 2, 3, 4, 5]
+    assert sorted(iec_blocks.BODIES) == [0, 1, 2, 3, 4, 5, 1000, 1001]
 
 
 def test_ton_measures_across_the_wrap_of_the_system_time() -> None:

@@ -87,7 +87,12 @@ def test_every_library_function_has_a_body_and_its_siemens_number() -> None:
     numbers = {function.name: number for number, function in BY_NUMBER.items()}
     some = {name: numbers[name] for name in ("CONCAT", "I_STRNG", "RIGHT", "AD_DT_TM", "SB_DT_DT")}
     assert some == {"CONCAT": 2, "I_STRNG": 16, "RIGHT": 32, "AD_DT_TM": 1, "SB_DT_DT": 34}
-    assert len(BY_NUMBER) == len(FUNCTIONS) == 34
+    assert len(BY_NUMBER) == len(FUNCTIONS)
+    # the 34 of the Standard Library; FC 660-676 the WSTRING versions of the STRING ones and
+    # the two conversions; from FC 700 on the S7-1500 types' (``lang.long_library``)
+    assert len([number for number in BY_NUMBER if number < 660]) == 34
+    wide = {BY_NUMBER[number].name for number in range(660, 677)}
+    assert {"LEN_WSTRING", "CONCAT_WSTRING", "EQ_WSTRING", "NE_WSTRING"} <= wide
 
 
 def test_called_by_name_or_number_the_block_is_added_with_its_symbol() -> None:

@@ -83,10 +83,10 @@ def test_set_of_a_marker_is_written_once_after_ob100(tmp_path: Path) -> None:
     assert state["M"] == {"11": 102}
 
 
-def test_compile_errors_exit_2_with_file_line_column_code(tmp_path: Path) -> None:
+def test_compile_errors_exit_1_with_file_line_column_code(tmp_path: Path) -> None:
     broken = LATCH.replace("AN    I      0.1;", "XYZ   I      0.1;")
     code, state, stderr = _run(tmp_path, broken)
-    assert code == 2
+    assert code == 1  # as nasaq compile (tests/backend/test_cli_exit_codes.py)
     assert state is None
     lines = stderr.strip().splitlines()
     assert len(lines) == 1

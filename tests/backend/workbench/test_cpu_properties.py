@@ -66,13 +66,25 @@ def test_keys_and_words_are_case_insensitive_and_none_switches_the_clock_off() -
     assert found.properties.startup == "warm"
 
 
+def test_the_s7_1500_profile_is_chosen_by_its_name_or_the_s7_1200s() -> None:
+    for word in ("S7-1500", "s7-1200", "S7-1200/1500"):
+        found = read_properties(f"profile = {word}\nretentive_markers = 10000\n")
+        assert found.ok, found.diagnostics
+        assert found.properties.profile is Profile.S7_1500
+        assert found.properties.retentive.markers == 10000  # 16 KB of bit memory there
+    bad = read_properties("profile = S7-1600\n")
+    assert [d.message for d in bad.diagnostics] == [
+        "profile = S7-1600: expected S7-300 | S7-400 | S7-1500."
+    ]
+
+
 def test_each_bad_line_is_reported_with_its_line_and_column_and_the_rest_applies() -> None:
     text = (
         "cycle_time = 20\n"  # 1: good
         "this is no property\n"  # 2: PRJ901
         "colour = red\n"  # 3: PRJ902
         "cycle_time = 30\n"  # 4: PRJ903 (the first stays)
-        "profile = S7-1500\n"  # 5: PRJ904 at the value
+        "profile = S7-1600\n"  # 5: PRJ904 at the value
         "cycle_monitoring_time = 9000\n"  # 6: PRJ905
         "startup = hot\n"  # 7: PRJ906
         "retentive_counters = 257\n"  # 8: PRJ905 for the S7-300

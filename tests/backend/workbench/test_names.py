@@ -11,6 +11,8 @@ def test_the_suffixes_are_what_the_compiler_reads() -> None:
         ".awl",
         ".stl",
         ".scl",
+        ".db",
+        ".udt",
         ".lad",
         ".fbd",
         ".graph",
@@ -22,6 +24,8 @@ def test_the_suffixes_are_what_the_compiler_reads() -> None:
     assert [language_of(f"x{s.upper()}") for s in SOURCE_SUFFIXES] == [
         "stl",
         "stl",
+        "scl",
+        "scl",
         "scl",
         "lad",
         "fbd",
@@ -44,6 +48,8 @@ def test_the_suffixes_are_what_the_compiler_reads() -> None:
         ("v1.2.awl", True),
         ("Latch.lad", True),
         ("Gates.FBD", True),
+        ("Recipe data.db", True),  # TIA Portal's DB and PLC data type exports (SCL)
+        ("MotorData.udt", True),
         ("nul.awl", False),
         ("COM1.backup.awl", False),
         ("OB1.awl.", False),

@@ -139,6 +139,6 @@ def test_the_same_sources_are_compiled_once(monkeypatch: pytest.MonkeyPatch) -> 
     sources = [("calc.awl", CALC.replace("FC 7", "FC 8"))]
     first = outline(sources)
     calls: list[object] = []
-    monkeypatch.setattr(outline_module, "compile_sources", lambda *args: calls.append(args))
+    monkeypatch.setattr(outline_module, "compile_project", lambda *args: calls.append(args))
     assert outline(list(sources)) is first
     assert calls == []

@@ -105,6 +105,10 @@ def _v_area(ctx: Ctx, site: CallSite, callee: BlockRef, args: tuple[CallArg, ...
         size = max(2, (formal.size_bits + 7) // 8)
         if passed_as_db_pointer(formal):
             site.vslots[arg.name] = take(6)
+            if isinstance(arg.value, ParamRef) and type_ != "POINTER":
+                # The caller's own parameter passed on: if it lies in the caller's caller's
+                # local data, no DB pointer reaches it from the callee (nasaq.cpu.calls).
+                site.vforward[arg.name] = take(size)
         elif type_ == "ANY":
             site.vslots[arg.name] = take(10)
         if isinstance(arg.value, Constant) and type_ not in ("POINTER", "ANY"):

@@ -48,6 +48,7 @@ REASONS: dict[str, str] = {
     "LAD326": "OPN in a rung: OPN stands only straight from the rail, alone in its network.",
     "LAD327": "A( … ) holding NOT, an edge, a midline or a box after other checks: in LAD it "
     "would act on the whole flow so far.",
+    "LAD151": "Brackets nested deeper than the converter follows (40 levels; STEP 7 allows 7).",
 }
 
 _INSTRUCTION_WIDTH = 60

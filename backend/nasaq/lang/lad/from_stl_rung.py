@@ -45,6 +45,7 @@ from nasaq.lang.lad.model import (
     StatusContact,
 )
 from nasaq.lang.lad.to_stl_boxes import needs_whole_flow
+from nasaq.lang.limits import MAX_LAD_NESTING
 
 __all__ = ["FinalBoxError", "PinDirections", "RungReader", "is_temp"]
 
@@ -59,6 +60,7 @@ class RungReader(BoxReading):
         self.assigned: dict[str, set[str]] = {}
         self.label: str | None = None
         self.branch_temp = ""  # the temporary that carries the common logic to the outputs
+        self.depth = 0  # brackets open around the chain being read
 
     # ---- network ----------------------------------------------------------------------------
 
@@ -319,7 +321,13 @@ class RungReader(BoxReading):
         c.groups = []
 
     def bracket(self, c: Chain, step: Step) -> None:
-        inner, _ = self.chain(nested=True)
+        self.depth += 1
+        if self.depth > MAX_LAD_NESTING:  # the lift recurses per level (STEP 7 allows 7)
+            self.refuse("LAD151", step)
+        try:
+            inner, _ = self.chain(nested=True)
+        finally:
+            self.depth -= 1
         op = step.op
         if op == "A(":
             box = edge_box(inner)

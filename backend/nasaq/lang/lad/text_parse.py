@@ -39,6 +39,7 @@ from nasaq.lang.lad.model import (
 )
 from nasaq.lang.lad.text_ids import number_elements
 from nasaq.lang.lad.text_scan import Pos, Scanner
+from nasaq.lang.limits import MAX_LAD_NESTING
 
 BLOCK_KINDS = {"ORGANIZATION_BLOCK": "OB", "FUNCTION_BLOCK": "FB", "FUNCTION": "FC"}
 BLOCK_ENDS = {f"END_{word}": word for word in BLOCK_KINDS}
@@ -123,6 +124,8 @@ class LadReader:
         self.default_language = "FBD" if file.lower().endswith(".fbd") else "LAD"
         self.blocks: list[LadBlock] = []
         self._ids: dict[str, list[Pos]] = {}
+        self._depth = 0  # series being read inside each other (parallels, logic pins)
+        self._silenced = False  # LAD150 silenced the scanner until the network ends
 
     def read(self) -> list[LadBlock]:
         scan = self.scan
@@ -305,6 +308,10 @@ class LadReader:
             scan.skip_to(_NETWORK_SYNC)
             return None
         rung = self.rung()
+        if self._silenced:
+            self._silenced = False
+            scan.truncated = False
+            return None
         if rung is None:
             return None
         logic, outputs = rung
@@ -425,8 +432,29 @@ class LadReader:
     def series(self, stops: frozenset[str], in_pin: bool = False) -> list[_Item]:
         """Elements up to a word in ``stops`` or any other structural word (in a box pin also
         up to the ``,`` or ``)`` that ends the pin)."""
-        scan = self.scan
         items: list[_Item] = []
+        if self._depth >= MAX_LAD_NESTING:
+            self.too_deep()
+            return items
+        self._depth += 1
+        try:
+            self._series(stops, in_pin, items)
+        finally:
+            self._depth -= 1
+        return items
+
+    def too_deep(self) -> None:
+        """LAD150 where parallels and logic pins nest past ``MAX_LAD_NESTING``: the rest of
+        the network is skipped, and the levels still open report nothing more about it."""
+        scan = self.scan
+        scan.report("LAD150", limit=MAX_LAD_NESTING)
+        was = scan.truncated
+        scan.truncated = True
+        scan.skip_to(_NETWORK_SYNC)
+        self._silenced = self._silenced or not was
+
+    def _series(self, stops: frozenset[str], in_pin: bool, items: list[_Item]) -> None:
+        scan = self.scan
         while not scan.at_end():
             word = scan.peek_word()
             if word in stops or word in STRUCTURE or word in scan.host_words:
@@ -442,7 +470,6 @@ class LadReader:
             node = self.element(name.upper(), name, at)
             if node is not None:
                 items.append(_Item(node, at, name))
-        return items
 
     def element(self, word: str, name: str, at: Pos) -> Element | Final | None:
         scan = self.scan

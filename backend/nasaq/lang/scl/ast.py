@@ -140,7 +140,19 @@ class Paren:
     loc: Loc = field(default=_NOWHERE, compare=False, repr=False)
 
 
-Variable = Name | Local | Symbol | Address | IndexedAddress | Member | Index | Call
+@dataclass(slots=True)
+class Slice:
+    """TIA's slice access (S7-1200/1500): ``x.%X3`` (bit), ``w.%B1`` (byte), ``d.%W0`` (word),
+    ``l.%D1`` (doubleword): the ``index``-th part of ``width`` counted from the least significant
+    end of ``base``."""
+
+    base: Expr
+    width: str  # X, B, W or D
+    index: int
+    loc: Loc = field(default=_NOWHERE, compare=False, repr=False)
+
+
+Variable = Name | Local | Symbol | Address | IndexedAddress | Member | Index | Call | Slice
 Expr = Literal | Variable | Unary | Binary | Paren
 
 
@@ -149,9 +161,26 @@ Expr = Literal | Variable | Unary | Binary | Paren
 
 @dataclass(slots=True)
 class Assign:
+    """``target := value``; TIA's multiple assignment ``a := b := c`` keeps ``b`` in ``chain``
+    (the further targets, left to right): ``b := c`` runs first, then ``a := b``. TIA's
+    ``a += b`` is ``a := a + b`` with ``op`` "+" (``value`` the Binary, its left the target)."""
+
     target: Expr
     value: Expr
     loc: Loc = field(default=_NOWHERE, compare=False, repr=False)
+    chain: list[Expr] = field(default_factory=list)
+    op: str | None = None
+
+    def steps(self) -> list[Assign]:
+        """The simple assignments a multiple assignment stands for, in the order they run."""
+        if not self.chain:
+            return [self]
+        targets = [self.target, *self.chain]
+        values = [*self.chain, self.value]
+        return [
+            Assign(target, value, loc=self.loc)
+            for target, value in reversed(list(zip(targets, values, strict=True)))
+        ]
 
 
 @dataclass(slots=True)
@@ -178,10 +207,11 @@ class If:
 
 @dataclass(slots=True)
 class CaseValue:
-    """One case label: a value (``high`` None) or a range ``low..high``."""
+    """One case label: a value (``high`` None) or a range ``low..high``; a bound is a literal or
+    a named constant (``K1``, TIA's ``#K1``, a global constant ``"K"``)."""
 
-    low: Literal
-    high: Literal | None = None
+    low: Literal | Name | Local | Symbol
+    high: Literal | Name | Local | Symbol | None = None
     loc: Loc = field(default=_NOWHERE, compare=False, repr=False)
 
 
@@ -361,7 +391,16 @@ class InitList:
     loc: Loc = field(default=_NOWHERE, compare=False, repr=False)
 
 
-InitItem = Expr | InitRepeat | InitList
+@dataclass(slots=True)
+class InitStruct:
+    """TIA's ``(v1, (), v3)``: the initial values of a structure's members in order; ``()``
+    leaves a member its own."""
+
+    values: list[InitItem]
+    loc: Loc = field(default=_NOWHERE, compare=False, repr=False)
+
+
+InitItem = Expr | InitRepeat | InitList | InitStruct
 
 
 @dataclass(slots=True)

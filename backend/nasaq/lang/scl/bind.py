@@ -5,10 +5,13 @@ instance data, DBs and the L stack.
 Numbering follows TIA Portal's automatic numbering:
 - an absolute name (``FB10``, ``DB3``) keeps its number;
 - a name the symbol table gives to a block of the same kind takes that number;
-- the OB called ``Main`` is OB 1;
+- the OB called ``Main`` is OB 1; any other OB is numbered by its event name as TIA does
+  (``nasaq.lang.tia_names``: "Startup" OB 100, "Cyclic interrupt" OB 35/30 ..., on the
+  S7-1200/1500 family any other name OB 123 up); on S7-300/400 an OB that is no event has no
+  number (SCL205);
 - every other FB, FC, DB (and UDT) takes the lowest number of its kind that no block uses, in
   source order, starting at 1. The absolute and symbol-table numbers are collected first, so a
-  later ``FB1`` is never given away. An OB without a number (other than ``Main``) is an error.
+  later ``FB1`` is never given away.
 ``PROGRAM`` is S7-SCL's alias of FUNCTION_BLOCK (the Main program, or ``PROGRAM OB1``, is an OB).
 
 Names are case-insensitive (``casefold``). Declaration problems are ``SCL2xx`` diagnostics; a
@@ -23,13 +26,16 @@ from dataclasses import dataclass, field
 
 from nasaq.diagnostics import Diagnostic
 from nasaq.ir import BlockKind
+from nasaq.lang import dtl, wide_text
 from nasaq.lang.layout import Expansion, Layout, RecursiveTypeError, Slot
-from nasaq.lang.profiles import DEFAULT_PROFILE
-from nasaq.lang.scl import ast
+from nasaq.lang.profiles import DEFAULT_PROFILE, S7_1500_TYPES, is_s7_1500
+from nasaq.lang.scl import ast, optimized
 from nasaq.lang.stl.addresses import AddressError, parse_address
 from nasaq.lang.stl.diag import problem
 from nasaq.lang.stl.symbols import Symbol, SymbolTable
-from nasaq.lang.system_blocks import SFB_INTERFACES
+from nasaq.lang.system_blocks import F_TRIG_SFB, R_TRIG_SFB, SFB_INTERFACES
+from nasaq.lang.tia_names import ob_event, ob_number
+from nasaq.lang.tia_system import tia_system
 from nasaq.lang.types import (
     ArrayType,
     BlockType,
@@ -49,8 +55,23 @@ KIND_OF_KEYWORD = {
     "DATA_BLOCK": BlockKind.DB,
     "TYPE": BlockKind.UDT,
 }
-# IEC timers and counters as multi-instances: the system function blocks of S7-300/400.
+# IEC timers and counters as multi-instances: the system function blocks of S7-300/400; the
+# edge detectors R_TRIG and F_TRIG (TIA Portal, every CPU family), numbered by Nasaq.
 IEC_INSTANCES = {"CTU": 0, "CTD": 1, "CTUD": 2, "TP": 3, "TON": 4, "TOF": 5}
+IEC_INSTANCES |= {"R_TRIG": R_TRIG_SFB, "F_TRIG": F_TRIG_SFB}
+# TIA Portal's instance types of the S7-1200/1500 family (SCL500 under a classic profile), each
+# laid out as the SFB that runs it: IEC_TIMER serves TP, TON and TOF (one layout), IEC_COUNTER
+# is laid out as CTUD (``"C".CTU(...)`` on it runs CTUD, ``typecheck.iec_calls``).
+TIA_IEC_TYPES = {
+    "TP_TIME": 3,
+    "TON_TIME": 4,
+    "TOF_TIME": 5,
+    "IEC_TIMER": 4,
+    "CTU_INT": 0,
+    "CTD_INT": 1,
+    "CTUD_INT": 2,
+    "IEC_COUNTER": 2,
+}
 AUTO_NUMBERED = (BlockKind.FB, BlockKind.FC, BlockKind.DB, BlockKind.UDT)
 SECTION_OF_KEYWORD = {
     "VAR_INPUT": "IN",
@@ -61,6 +82,8 @@ SECTION_OF_KEYWORD = {
     "VAR_TEMP": "TEMP",
 }
 # A variable whose declared type is unknown (already reported): never reported again.
+# Parameter types of the S7-1200/1500 family that are no elementary type (SCL500 or SCL501).
+_PARAMETER_ONLY = frozenset({"VARIANT", "DB_ANY"})
 UNKNOWN = Elementary("UNKNOWN")
 VOID = Elementary("VOID")
 
@@ -98,6 +121,7 @@ class SclBlock:
     db_type: DataType | None = None  # DB: StructType, or BlockType of its FB/UDT
     labels: set[str] = field(default_factory=set)  # casefolded
     external: bool = False  # compiled by another front end (see ``SclIndex.add_external``)
+    optimized: bool = False  # S7_Optimized_Access := 'TRUE' under S7-1500 (``scl.optimized``)
 
     @property
     def label(self) -> str:
@@ -187,12 +211,15 @@ class SclIndex:
                 elif found is None:
                     pending.append((node, source.file, kind))
         for node, file, kind in pending:
-            if kind not in AUTO_NUMBERED:
-                self.diagnostics.append(problem("SCL205", file, node.name.loc, name=node.name.text))
-                continue
-            number = 1
-            while (kind, number) in self.blocks:
-                number += 1
+            if kind is BlockKind.OB:
+                event_number = self._ob_number(node, file)
+                if event_number is None:
+                    continue
+                number = event_number
+            else:
+                number = 1
+                while (kind, number) in self.blocks:
+                    number += 1
             info = self._register(node, file, kind, number)
             if info is not None:
                 placed.append(info)
@@ -216,8 +243,25 @@ class SclIndex:
         symbol = self.symbols.get(name.text)
         if symbol is not None and symbol.parsed.kind == "block" and symbol.parsed.block is kind:
             return kind, symbol.parsed.number
-        if name.text.casefold() == "main" and kind in (BlockKind.OB, BlockKind.FB):
+        program = node.kind.upper() == "PROGRAM"  # a FUNCTION_BLOCK called Main is an FB
+        if name.text.casefold() == "main" and (kind is BlockKind.OB or program):
             return BlockKind.OB, 1
+        return None
+
+    def _ob_number(self, node: ast.Block, file: str) -> int | None:
+        """An OB named by its event, as TIA numbers it (``nasaq.lang.tia_names``); reported
+        when there is no number for it."""
+        name = node.name.text
+        taken = {number for kind, number in self.blocks if kind is BlockKind.OB}
+        number = ob_number(name, taken, self.profile)
+        if number is not None:
+            return number
+        event = ob_event(name)
+        if event is None:
+            self.diagnostics.append(problem("SCL205", file, node.name.loc, name=name))
+            return None
+        numbers = ", ".join(str(n) for n in event.classic)
+        self.diagnostics.append(problem("SCL602", file, node.name.loc, name=name, numbers=numbers))
         return None
 
     def _register(
@@ -253,6 +297,7 @@ class SclIndex:
 
     def _declare(self, info: SclBlock) -> None:
         node = info.node
+        optimized.declare(self, info)
         for section in node.sections:
             if isinstance(section, ast.ConstSection):
                 for const in section.decls:
@@ -263,19 +308,19 @@ class SclIndex:
                         )
             elif isinstance(section, ast.LabelSection):
                 info.labels.update(label.casefold() for label in section.names)
-        for section in node.sections:
-            if not isinstance(section, ast.VarSection):
-                continue
-            if section.modifier is not None and section.modifier.upper() == "CONSTANT":
+            elif _is_constant_section(section):
+                # first, as CONST: TIA exports VAR CONSTANT after the arrays it bounds
                 for decl in section.decls:
                     if isinstance(decl, ast.VarDecl) and decl.init:
                         first = decl.init[0]
-                        if not isinstance(first, ast.InitRepeat | ast.InitList):
+                        if not isinstance(first, ast.InitRepeat | ast.InitList | ast.InitStruct):
                             for part in decl.names:
                                 value = self.const_value(info, first)
                                 info.constants[part.name.casefold()] = Constant(
                                     part.name, first, value
                                 )
+        for section in node.sections:
+            if not isinstance(section, ast.VarSection) or _is_constant_section(section):
                 continue
             kind = section.kind.upper()
             name = SECTION_OF_KEYWORD.get(kind, "STAT")
@@ -320,8 +365,13 @@ class SclIndex:
             if isinstance(source, ast.StructType):
                 return self.type_of(info, source)
             made_of = self.named(source.text)
+            iec = None
+            if made_of is None and not source.quoted:
+                iec = self._iec(info, source.text, source.loc)
+            if iec is not None:  # a single-instance IEC timer/counter DB (TIA)
+                return iec if iec.number >= 0 else None
             if made_of is None or made_of.kind not in (BlockKind.FB, BlockKind.UDT):
-                self.diagnostics.append(problem("SCL202", info.file, source.loc, type=source.text))
+                self._unknown_type(info, source.text, source.loc, source.quoted)
                 return None
             return BlockType(made_of.kind.value, made_of.number)
         # TIA: a global DB declared with VAR sections
@@ -335,6 +385,9 @@ class SclIndex:
         if isinstance(node, ast.ArrayType):
             dims: list[tuple[int, int]] = []
             for dim in node.dims:
+                if dim.low is None:  # ARRAY[*]
+                    self._s7_1500_only(info, "ARRAY[*]", dim.loc)
+                    return UNKNOWN
                 low = self._bound(info, dim.low, dim.loc)
                 high = None if low is None else self._bound(info, dim.high, dim.loc)
                 if low is None or high is None:
@@ -352,37 +405,85 @@ class SclIndex:
                 return VOID
             found = elementary(node.name)
             if isinstance(found, StringType):
+                if found.wide and not is_s7_1500(self.profile):
+                    self._s7_1500_only(info, found.name, node.loc)
+                    return UNKNOWN
                 if node.length is None:
                     return found
                 length = self._bound(info, node.length, node.loc)
                 if length is None:
                     return UNKNOWN
-                if not 0 <= length <= 254:
+                if not 0 <= length <= wide_text.longest(found):
                     self.diagnostics.append(
                         problem(
                             "SCL218",
                             info.file,
                             node.length.loc,
                             text=length,
-                            type="STRING",
+                            type=found.name,
                             hint="",
                         )
                     )
                     return UNKNOWN
-                return StringType(length)
+                return StringType(length, found.wide)
             if found is not None:
+                classic = not is_s7_1500(self.profile)
+                if classic and type(found) is Elementary and found.name in S7_1500_TYPES:
+                    self._s7_1500_only(info, found.name, node.loc)
+                    return UNKNOWN
                 return found
+            if node.name.upper() in _PARAMETER_ONLY:
+                self._s7_1500_only(info, node.name.upper(), node.loc)
+                return UNKNOWN
         block = self.named(node.name)
         if block is not None and block.kind in (BlockKind.FB, BlockKind.UDT):
             return BlockType(block.kind.value, block.number)
-        iec = IEC_INSTANCES.get(node.name.upper())
-        if iec is not None and not node.quoted:
-            return BlockType("SFB", iec)
+        iec = None if node.quoted else self._iec(info, node.name, node.loc)
+        if iec is not None:
+            return iec if iec.number >= 0 else UNKNOWN
+        if not node.quoted and node.name.upper() == dtl.NAME:  # after the program's own types
+            if not is_s7_1500(self.profile):
+                self._s7_1500_only(info, dtl.NAME, node.loc)
+                return UNKNOWN
+            return dtl.DTL
         absolute = _absolute(node.name)
         if absolute is not None and absolute[0] is BlockKind.SFB and absolute[1] in SFB_INTERFACES:
             return BlockType("SFB", absolute[1])
-        self.diagnostics.append(problem("SCL202", info.file, node.loc, type=node.name))
+        self._unknown_type(info, node.name, node.loc, node.quoted)
         return UNKNOWN
+
+    def _unknown_type(self, info: SclBlock, name: str, loc: ast.Loc, quoted: bool) -> None:
+        """SCL202, or SCL920 for a TIA system block/type Nasaq does not simulate (TIA writes
+        those unquoted; a quoted name is a block of the user's)."""
+        system = None if quoted else tia_system(name)
+        if system is not None:
+            self.diagnostics.append(problem("SCL920", info.file, loc, name=system))
+        else:
+            self.diagnostics.append(problem("SCL202", info.file, loc, type=name))
+
+    def _iec(self, info: SclBlock, name: str, loc: ast.Loc) -> BlockType | None:
+        """The SFB instance type an IEC type name stands for; None for other names. A TIA
+        S7-1200/1500 name under a classic profile is SCL500 (then an SFB numbered -1)."""
+        upper = name.upper()
+        number = IEC_INSTANCES.get(upper)
+        if number is not None:
+            return BlockType("SFB", number)
+        number = TIA_IEC_TYPES.get(upper)
+        if number is None:
+            return None
+        if not is_s7_1500(self.profile):
+            self._s7_1500_only(info, upper, loc)
+            return BlockType("SFB", -1)
+        return BlockType("SFB", number)
+
+    def _s7_1500_only(self, info: SclBlock, what: str, loc: ast.Loc) -> None:
+        """SCL500 under a classic profile; under S7-1500, ``ARRAY[*]``, VARIANT and DB_ANY are
+        valid but cannot run here yet (SCL501, COMPATIBILITY.md "S7-1500 profile")."""
+        if is_s7_1500(self.profile):
+            if what in _PARAMETER_ONLY or what == "ARRAY[*]":
+                self.diagnostics.append(problem("SCL501", info.file, loc, what=what))
+            return
+        self.diagnostics.append(problem("SCL500", info.file, loc, what=what, profile=self.profile))
 
     def _bound(self, info: SclBlock, node: ast.Expr | None, where: ast.Loc) -> int | None:
         if node is None:  # ARRAY[*]: not supported on S7-300/400
@@ -507,6 +608,13 @@ class SclIndex:
     def _recursive(self, info: SclBlock, error: RecursiveTypeError) -> None:
         name = f"{error.block.kind} {error.block.number}"
         self.diagnostics.append(problem("SCL210", info.file, info.node.name.loc, name=name))
+
+
+def _is_constant_section(section: object) -> bool:
+    """A TIA ``VAR CONSTANT`` section."""
+    if not isinstance(section, ast.VarSection) or section.modifier is None:
+        return False
+    return section.modifier.upper() == "CONSTANT"
 
 
 def _absolute(text: str) -> tuple[BlockKind, int] | None:

@@ -153,6 +153,8 @@ def name_node(kind: str, text: str, where: ast.Loc) -> ast.Name:
 
 
 def local_node(kind: str, text: str, where: ast.Loc) -> ast.Local:
+    if text[1:2] == '"':  # TIA's #"raw value"
+        return ast.Local(text[2:-1], where)
     return ast.Local(text[1:], where)
 
 
@@ -315,6 +317,10 @@ class AstBuilder:
         values: list[ast.InitItem] = children[0]
         return ast.InitList(values, loc=span(values[0], values[-1]))
 
+    def init_struct(self, children: list[Any]) -> ast.InitStruct:
+        values: list[ast.InitItem] = children[1] if len(children) == 3 else []
+        return ast.InitStruct(values, loc=span(children[0], children[-1]))
+
     def named_type(self, children: list[Any]) -> ast.NamedType:
         token: AnyToken = children[0]
         if token.type == "QSYM":
@@ -355,8 +361,17 @@ class AstBuilder:
         return ast.Empty(loc=where)
 
     def assign(self, children: list[Any]) -> ast.Assign:
-        target, value = children
-        return ast.Assign(target, value, _join(target, value))
+        if len(children) == 2:
+            target, value = children
+            return ast.Assign(target, value, _join(target, value))
+        target, *chain, value = children  # a := b := c
+        return ast.Assign(target, value, _join(target, value), chain)
+
+    def compound_assign(self, children: list[Any]) -> ast.Assign:
+        target, token, value = children
+        op: str = token.value[0]
+        combined = ast.Binary(op, target, value, _join(target, value))
+        return ast.Assign(target, combined, _join(target, value), op=op)
 
     def call_stmt(self, children: list[Any]) -> ast.CallStmt:
         call: ast.Call = children[0]
@@ -396,7 +411,10 @@ class AstBuilder:
         return _Else(children[-1])
 
     def case_stmt(self, children: list[Any]) -> ast.Case:
-        branches = [child for child in children if isinstance(child, ast.CaseBranch)]
+        branches: list[ast.CaseBranch] = []
+        for child in children:
+            if isinstance(child, ast.CaseBranch):
+                branches += _split_at_labels(child)
         orelse = next((child.body for child in children if isinstance(child, _Else)), None)
         return ast.Case(children[1], branches, orelse, loc=span(children[0], children[-1]))
 
@@ -410,6 +428,15 @@ class AstBuilder:
     def case_value(self, children: list[Any]) -> ast.CaseValue:
         high = children[1] if len(children) > 1 else None
         return ast.CaseValue(children[0], high, loc=span(children[0], children[-1]))
+
+    def case_name(self, children: list[Any]) -> ast.Name | ast.Local | ast.Symbol:
+        token: AnyToken = children[0]
+        text, where = token.value, token_loc(token)
+        if text.startswith("#"):
+            return local_node(token.type, text, where)
+        if text.startswith('"'):
+            return symbol_node(token.type, text, where)
+        return name_node(token.type, text, where)
 
     def neg_literal(self, children: list[Any]) -> ast.Literal:
         minus, value = children
@@ -509,11 +536,11 @@ class AstBuilder:
 
     def named(self, children: list[Any]) -> ast.Arg:
         name, value = children
-        return ast.Arg(name.value, value, loc=span(name, value))
+        return ast.Arg(_parameter(name), value, loc=span(name, value))
 
     def output(self, children: list[Any]) -> ast.Arg:
         name, value = children
-        return ast.Arg(name.value, value, output=True, loc=span(name, value))
+        return ast.Arg(_parameter(name), value, output=True, loc=span(name, value))
 
     def name(self, children: list[Any]) -> ast.Name:
         token: AnyToken = children[0]
@@ -559,6 +586,10 @@ class AstBuilder:
             part = name_node(kind, token.value, where)
         return ast.Member(base, part, _join(base, part))
 
+    def slice(self, children: list[Any]) -> ast.Slice:
+        base, token = children
+        return ast.Slice(base, token.value[1].upper(), int(token.value[2:]), span(base, token))
+
     def indexed_member(self, children: list[Any]) -> ast.Member:
         base = children[0]
         part = self.indexed_address(children[1:])
@@ -603,6 +634,29 @@ def _join(first: Any, last: Any) -> ast.Loc:
     start = first.loc
     end = last.loc
     found: ast.Loc = _new(_Loc, (start[0], start[1], end[2], end[3]))
+    return found
+
+
+def _parameter(token: AnyToken) -> str:
+    """A formal parameter's name; TIA may quote it (``"inPar" := x``)."""
+    text: str = token.value
+    return text[1:-1] if token.type == "QSYM" else text
+
+
+def _split_at_labels(branch: ast.CaseBranch) -> list[ast.CaseBranch]:
+    """A CASE branch whose statements hold ``K2:`` (parsed as a jump label: LALR(1) cannot tell
+    it from the label of the next branch) split there: the name is a named constant labelling a
+    branch of its own, as TIA Portal reads it."""
+    body = branch.body
+    if not any(type(statement) is ast.Label for statement in body):
+        return [branch]
+    found = [ast.CaseBranch(branch.values, [], loc=branch.loc)]
+    for statement in body:
+        if type(statement) is ast.Label:
+            value = ast.CaseValue(ast.Name(statement.name, statement.loc), loc=statement.loc)
+            found.append(ast.CaseBranch([value], [], loc=statement.loc))
+        else:
+            found[-1].body.append(statement)
     return found
 
 

@@ -7,9 +7,12 @@ later by "format document" and by the "show generated STL" view's source column.
 
 from __future__ import annotations
 
+import re
+
 from nasaq.lang.scl import ast
 
 _INDENT = "  "
+_PLAIN_NAME = re.compile(r"[A-Za-z_]\w*")  # a parameter name written without quotes
 
 
 def expr(node: ast.Expr | ast.InitItem) -> str:
@@ -18,7 +21,7 @@ def expr(node: ast.Expr | ast.InitItem) -> str:
     if isinstance(node, ast.Name):
         return node.name
     if isinstance(node, ast.Local):
-        return "#" + node.name
+        return "#" + (node.name if _PLAIN_NAME.fullmatch(node.name) else f'"{node.name}"')
     if isinstance(node, ast.Symbol):
         return f'"{node.name}"'
     if isinstance(node, ast.Address):
@@ -27,6 +30,8 @@ def expr(node: ast.Expr | ast.InitItem) -> str:
         return f"{node.area}[{', '.join(expr(item) for item in node.indices)}]"
     if isinstance(node, ast.Member):
         return f"{expr(node.base)}.{expr(node.name)}"
+    if isinstance(node, ast.Slice):
+        return f"{expr(node.base)}.%{node.width}{node.index}"
     if isinstance(node, ast.Index):
         return f"{expr(node.base)}[{', '.join(expr(item) for item in node.indices)}]"
     if isinstance(node, ast.Call):
@@ -40,13 +45,16 @@ def expr(node: ast.Expr | ast.InitItem) -> str:
         return f"({expr(node.inner)})"
     if isinstance(node, ast.InitRepeat):
         return f"{node.count}({', '.join(expr(item) for item in node.values)})"
+    if isinstance(node, ast.InitStruct):
+        return f"({', '.join(expr(item) for item in node.values)})"
     return f"[{', '.join(expr(item) for item in node.values)}]"
 
 
 def _arg(arg: ast.Arg) -> str:
     if arg.name is None:
         return expr(arg.value)
-    return f"{arg.name} {'=>' if arg.output else ':='} {expr(arg.value)}"
+    name = arg.name if _PLAIN_NAME.fullmatch(arg.name) else f'"{arg.name}"'
+    return f"{name} {'=>' if arg.output else ':='} {expr(arg.value)}"
 
 
 def _attributes(attributes: list[ast.Attribute]) -> str:
@@ -111,7 +119,10 @@ def statements(body: list[ast.Stmt], depth: int) -> list[str]:
 def _statement(node: ast.Stmt, depth: int) -> list[str]:
     pad = _INDENT * depth
     if isinstance(node, ast.Assign):
-        return [f"{pad}{expr(node.target)} := {expr(node.value)};"]
+        if node.op is not None and isinstance(node.value, ast.Binary):  # a += b
+            return [f"{pad}{expr(node.target)} {node.op}= {expr(node.value.right)};"]
+        targets = "".join(f"{expr(target)} := " for target in [node.target, *node.chain])
+        return [f"{pad}{targets}{expr(node.value)};"]
     if isinstance(node, ast.CallStmt):
         return [f"{pad}{expr(node.call)};"]
     if isinstance(node, ast.If):

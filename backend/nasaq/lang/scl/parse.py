@@ -33,11 +33,14 @@ from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedCharacters, UnexpectedToken
 from lark.parse_tree_builder import ExpandSingleChild
 from lark.parsers.lalr_analysis import Shift
+from lark.utils import TextSlice
 
 from nasaq.diagnostics import Diagnostic, render
 from nasaq.lang.lalr_recovery import RecoveringDriver
+from nasaq.lang.limits import LEX_FALLBACK_WINDOW
 from nasaq.lang.scl import ast, lalr
 from nasaq.lang.scl.grammar import parser
+from nasaq.lang.scl.nesting import limit_nesting
 from nasaq.lang.stl.build import loc
 from nasaq.lang.stl.diag import span
 
@@ -307,7 +310,16 @@ class _Driver(RecoveringDriver):
                 if found is not None:
                     break
             else:
-                yield next(contextual.lex(lex_state, self.state))
+                # Lark's root lexer names the unexpected token. Its rest-of-line terminals
+                # would scan to the end of the line for every token of a long broken line
+                # (quadratic), so it sees a window of the text (``limits.LEX_FALLBACK_WINDOW``).
+                whole = lex_state.text
+                lex_state.text = TextSlice(text, whole.start, min(end, pos + LEX_FALLBACK_WINDOW))
+                try:
+                    token = next(contextual.lex(lex_state, self.state))
+                finally:
+                    lex_state.text = whole
+                yield token
                 continue
             value: str = found.group()
             kind: str = found.lastgroup or ""
@@ -387,7 +399,10 @@ class _Driver(RecoveringDriver):
         makes it acceptable (tried on a copy of the parser state). A closer that fits nothing
         open stands for the innermost closer of its kind (``END_WHILE`` written for
         ``END_FOR``) when there is one; otherwise the token is skipped."""
-        trial = self.state.copy()
+        try:
+            trial = self.state.copy()
+        except RecursionError:  # a value nested past nasaq.lang.limits: the token is skipped
+            return False
         closers: list[str] = []
         for _ in range(16):
             if self.acceptable(token.type, trial):
@@ -522,7 +537,8 @@ class _Driver(RecoveringDriver):
         self.skipping = True
         if token.type in _SYNC:
             self.skipping = False
-            if not self.place(token):
+            # a stray END_REGION (and its title) is complete: the next statement is kept
+            if not self.place(token) and token.type != "END_REGION":
                 self.skipping = True
         elif token.type == "_SEMI":
             self.skipping = False
@@ -602,6 +618,7 @@ def parse_source(
         if gc_was_enabled:
             gc.enable()
     blocks = [item for item in items if isinstance(item, ast.Block)]
+    diagnostics += limit_nesting(file, blocks)  # what the recursive passes could not take
     pragmas = [
         attribute
         for item in items

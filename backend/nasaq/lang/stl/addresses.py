@@ -4,6 +4,9 @@ Both mnemonic sets share one table: their area letters never collide (German E/A
 international I/Q/C/PI/PQ; M, L, V, DB, DI, T are common), so an area's meaning does not
 depend on the file's mnemonics; ``language`` only says which set spelled it.
 
+TIA Portal writes them with a ``%`` (``%I0.0``, ``%MW10``, ``%DB5.DBX2.1``); it is accepted
+and means the same.
+
 ``SFC -3`` / ``SFB -1``: negative numbers name awlsim's own system blocks (``__SHUTDOWN``,
 ``__REBOOT``, ``__SFB_NOP`` ...). They parse here (a symbol table may list them); the compiler
 accepts them only with test instructions enabled, like ``__ASSERT`` (see ``resolve``/``bind``).
@@ -46,7 +49,8 @@ BLOCK_PREFIXES = {
 SYSTEM_PREFIXES = frozenset({"SFC", "SFB"})
 _SHAPE = re.compile(
     r"^(?:DB\s*(?P<db>\d+)\s*\.\s*)?(?P<prefix>[A-Za-z]+)\s*"
-    r"(?P<sign>-\s*)?(?P<number>\d+(?:\.\d+)*)$"
+    r"(?P<sign>-\s*)?(?P<number>\d+(?:\.\d+)*)$",
+    re.IGNORECASE,  # db20.dbw0 as well as DB20.DBW0 (the lexer's ADDR is case-insensitive too)
 )
 
 
@@ -105,12 +109,20 @@ def _parsed(text: str) -> Parsed | str:
 
 
 def _parse(text: str) -> Parsed:
+    if "%" in text:  # TIA Portal's spelling of an absolute address: %I0.0, %DB5.DBW2
+        text = text.replace("%", "", 2) if text.lstrip().startswith("%") else text
     match = _SHAPE.match(text.strip())
     if match is None:
         raise AddressError("not an address")
     prefix = match["prefix"].upper()
     numbers = match["number"].split(".")
+    # No S7 address has a number of more than 5 digits; a longer one is refused before int()
+    # (Python refuses to convert more than 4,300 digits, and nothing needs to).
+    if any(len(part.lstrip("0")) > 9 for part in (*numbers, match["db"] or "")):
+        raise AddressError("the number is larger than 65535")
     db = int(match["db"]) if match["db"] is not None else None
+    if db is not None and db > 65535:
+        raise AddressError("the number is larger than 65535")
     if match["sign"] is not None:
         if prefix not in SYSTEM_PREFIXES or db is not None or len(numbers) > 1:
             raise AddressError("an address has no sign")

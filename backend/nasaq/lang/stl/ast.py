@@ -110,6 +110,7 @@ class InstrNode:
     args: list[CallArgNode] | None
     loc: Loc
     param_line: bool = False
+    attributes: dict[str, str] | None = None  # TIA: CALL #t {time_type := 'Time'} ( ... )
 
 
 @dataclass(slots=True)

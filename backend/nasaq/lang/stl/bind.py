@@ -8,16 +8,20 @@ any file of the program.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, is_dataclass
+from dataclasses import fields as dataclass_fields
 
 from nasaq.diagnostics import Diagnostic
 from nasaq.ir import BlockKind
+from nasaq.lang import wide_text
 from nasaq.lang.layout import Expansion, Layout, RecursiveTypeError, Slot
+from nasaq.lang.profiles import DEFAULT_PROFILE, needs_s7_1500
 from nasaq.lang.stl import ast
 from nasaq.lang.stl.addresses import AddressError, Parsed, parse_address
 from nasaq.lang.stl.diag import problem
 from nasaq.lang.stl.symbols import SymbolTable
 from nasaq.lang.system_blocks import SFB_INTERFACES
+from nasaq.lang.tia_system import tia_system
 from nasaq.lang.types import (
     ArrayType,
     BlockType,
@@ -41,8 +45,12 @@ SECTION_OF_KEYWORD = {
     "VAR_OUTPUT": "OUT",
     "VAR_IN_OUT": "IN_OUT",
     "VAR": "STAT",
+    "VAR RETAIN": "STAT",  # TIA Portal: retentive or not, static data all the same
+    "VAR NON_RETAIN": "STAT",
+    "VAR DB_SPECIFIC": "STAT",
     "VAR_TEMP": "TEMP",
 }
+CONSTANT_SECTION = "VAR CONSTANT"  # TIA Portal's local constants: values, not data
 
 
 @dataclass(slots=True)
@@ -66,6 +74,10 @@ class BlockInfo:
     sections: list[tuple[str, list[Field]]] = field(default_factory=list)
     params: list[Param] = field(default_factory=list)
     return_type: DataType | None = None
+    constants: dict[str, Field] = field(default_factory=dict)  # VAR CONSTANT, by upper name
+    # Variables (upper-case) left out because their type was reported: their uses are not
+    # reported again (one message for a missing UDT, not one per use).
+    untyped: set[str] = field(default_factory=set)
     db_type: DataType | None = None  # DB: StructType, or BlockType of its FB/SFB/UDT
     builtin: bool = False  # an SFB from the system catalogue
     # filled lazily by ProgramIndex:
@@ -85,9 +97,12 @@ class BlockInfo:
 class ProgramIndex:
     """All blocks of the program by (kind, number), with types and layouts."""
 
-    def __init__(self, symbols: SymbolTable, test_ops: bool = False) -> None:
+    def __init__(
+        self, symbols: SymbolTable, test_ops: bool = False, profile: str = DEFAULT_PROFILE
+    ) -> None:
         self.symbols = symbols
         self.test_ops = test_ops  # awlsim's own system blocks (SFB -1 ...) are accepted
+        self.profile = profile  # the compiler's: S7-1200/1500 things need S7-1500
         self.blocks: dict[tuple[BlockKind, int], BlockInfo] = {}
         self.layout = Layout(self._expand)
         self.diagnostics: list[Diagnostic] = []
@@ -100,7 +115,7 @@ class ProgramIndex:
     ) -> tuple[BlockKind, int] | None:
         """``OB 1`` / ``"Main"`` → (kind, number); reports what is wrong."""
         if quoted:
-            symbol = self.symbols.get(text)
+            symbol = self.symbols.lookup(text)
             if symbol is None:
                 self.diagnostics.append(problem("STL205", file, where, name=f'"{text}"'))
                 return None
@@ -161,6 +176,8 @@ class ProgramIndex:
             return None
         if (kind, number) in self.blocks:
             first = self.blocks[(kind, number)]
+            if kind is BlockKind.UDT and same_syntax(first.node.db_body, node.db_body):
+                return None  # STEP 7 exports a UDT with every source that uses it: one UDT
             self.diagnostics.append(
                 problem(
                     "STL215",
@@ -185,8 +202,11 @@ class ProgramIndex:
         file = info.file
         for item in node.head:
             if isinstance(item, ast.VarSectionNode):
+                fields = self.fields(item.decls, file, info.label, info.untyped)
+                if item.kind == CONSTANT_SECTION:
+                    info.constants.update((found.name.upper(), found) for found in fields)
+                    continue
                 section = SECTION_OF_KEYWORD.get(item.kind, "STAT")
-                fields = self.fields(item.decls, file, info.label)
                 info.sections.append((section, fields))
         if node.return_type is not None:
             if info.kind is BlockKind.FB:
@@ -195,7 +215,12 @@ class ProgramIndex:
                 )
             else:
                 info.return_type = self.type_of(node.return_type, file)
-        if info.kind in (BlockKind.DB, BlockKind.UDT) and node.db_body is not None:
+        if info.kind in (BlockKind.DB, BlockKind.UDT) and isinstance(
+            node.db_body, ast.StructTypeNode
+        ):
+            members = self.fields(node.db_body.members, file, "STRUCT", info.untyped)
+            info.db_type = StructType(tuple(members))
+        elif info.kind in (BlockKind.DB, BlockKind.UDT) and node.db_body is not None:
             info.db_type = self.type_of(node.db_body, file)
             db_type = info.db_type
             missing_udt = (
@@ -217,7 +242,13 @@ class ProgramIndex:
             if not is_void:
                 info.params.append(Param("RET_VAL", "RETURN", info.return_type, index))
 
-    def fields(self, decls: list[ast.VarDeclNode], file: str, owner: str) -> list[Field]:
+    def fields(
+        self,
+        decls: list[ast.VarDeclNode],
+        file: str,
+        owner: str,
+        untyped: set[str] | None = None,
+    ) -> list[Field]:
         seen: set[str] = set()
         fields: list[Field] = []
         for decl in decls:
@@ -230,6 +261,8 @@ class ProgramIndex:
             seen.add(key)
             data_type = self.type_of(decl.type, file)
             if data_type is None:
+                if untyped is not None:
+                    untyped.add(key)
                 continue
             fields.append(Field(decl.name, data_type, decl.init, decl.comment))
         return fields
@@ -240,22 +273,39 @@ class ProgramIndex:
                 return Elementary("VOID")  # only ever a return type: never laid out
             found = elementary(node.name)
             if found is None:
+                system = self.symbols.system(node.name)  # TON, CTU ... written unquoted (TIA)
+                if system is not None and system.parsed.block is BlockKind.SFB:
+                    return BlockType("SFB", system.parsed.number)
+                named = tia_system(node.name)  # PID_Compact, CONT_C ...: not simulated
+                if named is not None:
+                    self.diagnostics.append(problem("STL920", file, node.loc, name=named))
+                    return None
                 self.diagnostics.append(problem("STL224", file, node.loc, type=node.name))
                 return None
+            if isinstance(found, Elementary) and needs_s7_1500(found.name, self.profile):
+                self.diagnostics.append(
+                    problem("STL500", file, node.loc, what=found.name, profile=self.profile)
+                )
+                return None
+            if isinstance(found, StringType) and needs_s7_1500(found.name, self.profile):
+                self.diagnostics.append(
+                    problem("STL500", file, node.loc, what=found.name, profile=self.profile)
+                )
+                return None
             if isinstance(found, StringType) and node.length is not None:
-                if not 0 <= node.length <= 254:
+                if not 0 <= node.length <= wide_text.longest(found):
                     self.diagnostics.append(
                         problem(
                             "STL214",
                             file,
                             node.loc,
                             text=str(node.length),
-                            type="STRING",
-                            hint=" (0 to 254)",
+                            type=found.name,
+                            hint=f" (0 to {wide_text.longest(found)})",
                         )
                     )
                     return None
-                return StringType(node.length)
+                return StringType(node.length, found.wide)
             return found
         if isinstance(node, ast.ArrayTypeNode):
             element = self.type_of(node.element, file)
@@ -357,6 +407,25 @@ class ProgramIndex:
     def recursive(self, info: BlockInfo, error: RecursiveTypeError) -> None:
         name = f"{error.block.kind} {error.block.number}"
         self.diagnostics.append(problem("STL233", info.file, info.node.loc, name=name))
+
+
+def same_syntax(first: object, second: object) -> bool:
+    """Whether two syntax trees are written alike, wherever they stand (``loc`` aside)."""
+    if type(first) is not type(second):
+        return False
+    if isinstance(first, list) and isinstance(second, list):
+        return len(first) == len(second) and all(map(same_syntax, first, second))
+    if isinstance(first, dict) and isinstance(second, dict):
+        return first.keys() == second.keys() and all(
+            same_syntax(value, second[key]) for key, value in first.items()
+        )
+    if is_dataclass(first):
+        return all(
+            same_syntax(getattr(first, item.name), getattr(second, item.name))
+            for item in dataclass_fields(first)
+            if item.name not in ("loc", "end", "comment")
+        )
+    return first == second
 
 
 def _type_name(node: ast.TypeNode) -> str:

@@ -137,7 +137,8 @@ class AstBuilder:
     def var_section(self, children: list[Any]) -> ast.VarSectionNode:
         keyword: Token = children[0]
         decls = [child for child in children[1:-1] if isinstance(child, ast.VarDeclNode)]
-        return ast.VarSectionNode(str(keyword).upper(), decls, loc(keyword))
+        kind = " ".join(str(keyword).upper().split())  # "VAR  CONSTANT" -> "VAR CONSTANT"
+        return ast.VarSectionNode(kind, decls, loc(keyword))
 
     def var_decl(self, children: list[Any]) -> ast.VarDeclNode:
         name: Token = children[0]
@@ -152,7 +153,8 @@ class AstBuilder:
             else:
                 type_node = child
         assert type_node is not None
-        return ast.VarDeclNode(str(name), type_node, init, attributes, loc(name))
+        text = str(name)[1:-1] if name.type == "QSYM" else str(name)
+        return ast.VarDeclNode(text, type_node, init, attributes, loc(name))
 
     def init(self, children: list[_Init]) -> _Init:
         return children[0]
@@ -182,7 +184,7 @@ class AstBuilder:
         return children[0]  # the STRUCT alternative (the others have aliases)
 
     def dim(self, children: list[Token]) -> tuple[int, int]:
-        return int(str(children[0])), int(str(children[1]))
+        return _bound(str(children[0])), _bound(str(children[1]))
 
     def struct_type(self, children: list[Any]) -> ast.StructTypeNode:
         members = [child for child in children if isinstance(child, ast.VarDeclNode)]
@@ -197,6 +199,8 @@ class AstBuilder:
 
     def db_body(self, children: list[Any]) -> _DbBody:
         first = children[0]
+        if isinstance(first, Token) and first.type == "IDENT":
+            return _DbBody(self.named_type([first]))  # TON: a system FB by its name
         if isinstance(first, Token):
             return _DbBody(self.ref_type([first]))
         return _DbBody(first)
@@ -208,7 +212,10 @@ class AstBuilder:
     def lvalue(self, children: list[Any]) -> tuple[list[str | list[int]], ast.Loc]:
         path: list[str | list[int]] = []
         for child in children:
-            path.append(list(child) if isinstance(child, _Index) else str(child))
+            if isinstance(child, _Index):
+                path.append(list(child))
+            else:
+                path.append(str(child)[1:-1] if child.type == "QSYM" else str(child))
         return path, loc(children[0])
 
     def index(self, children: list[Token]) -> _Index:
@@ -231,6 +238,11 @@ class AstBuilder:
         args: list[ast.CallArgNode] | None = None
         if len(children) > 1 and isinstance(children[-1], _CallArgs):
             args = list(children.pop())
+        if len(children) > 1 and isinstance(children[-1], ast.AttributesNode):
+            attributes = children.pop().values
+            node = ast.InstrNode(str(mnemonic), children[1:], args, loc(mnemonic))
+            node.attributes = attributes
+            return node
         return ast.InstrNode(str(mnemonic), children[1:], args, loc(mnemonic))
 
     def param_line(self, children: list[Any]) -> ast.InstrNode:
@@ -244,7 +256,8 @@ class AstBuilder:
     def call_arg(self, children: list[Any]) -> ast.CallArgNode:
         name: Token = children[0]
         value = children[1] if len(children) > 1 else None
-        return ast.CallArgNode(str(name), value, loc(name))
+        text = str(name)[1:-1] if name.type == "QSYM" else str(name)
+        return ast.CallArgNode(text, value, loc(name))
 
     # ---- operands ---------------------------------------------------------------------------
 
@@ -272,7 +285,7 @@ class AstBuilder:
                 path.append(str(child)[1:-1])
             else:
                 path.append(str(child))
-        name = str(head)[1:-1] if not local else str(head)[1:]
+        name = str(head)[1:-1] if not local else str(head)[1:].strip('"')
         return ast.SymbolNode(name, local, path, loc(head))
 
     def symbol(self, children: list[Any]) -> ast.SymbolNode:
@@ -330,3 +343,11 @@ def unquote_chars(text: str) -> str:
         out.append(char)
         i += 1
     return "".join(out)
+
+
+def _bound(text: str) -> int:
+    """An array bound; one of more than 12 digits (past any S7 array, and Python converts at
+    most 4,300) stands as 10**12, which the bound checks refuse as they refuse any too big."""
+    if len(text.lstrip("+-0")) <= 12:
+        return int(text)
+    return -(10**12) if text.startswith("-") else 10**12

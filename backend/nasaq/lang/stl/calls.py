@@ -29,6 +29,7 @@ from nasaq.ir import (
     ParamRef,
     TimerRef,
 )
+from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.stl import ast
 from nasaq.lang.stl.bind import Param
 from nasaq.lang.stl.build import unquote_chars
@@ -47,6 +48,9 @@ from nasaq.lang.types import (
     type_text,
     width_of,
 )
+
+# TIA's data type choices of IEC timers and counters, and the one each has on S7-300/400.
+INSTRUCTION_TYPES = {"time_type": "Time", "value_type": "Int"}
 
 CONSTANT_FITS = {
     "BOOL": {ConstType.BOOL},
@@ -201,6 +205,8 @@ class CallLowerer:
         return found
 
     def _call(self, node: ast.InstrNode) -> CallInfo | None:
+        if node.attributes and not self.instruction_types(node, node.attributes):
+            return None
         if not node.operands:
             self.scope.report("STL202", node.loc, mnemonic="CALL", expected="a block")
             return None
@@ -259,6 +265,24 @@ class CallLowerer:
         args = self.arguments(block, known, node.args or [], node.loc)
         return CallInfo(block, instance, tuple(args))
 
+    def instruction_types(self, node: ast.InstrNode, attributes: dict[str, str]) -> bool:
+        """TIA's ``{time_type := 'Time'}`` / ``{value_type := 'Int'}`` after ``CALL``: the
+        S7-1200/1500 family's choice of data type for an IEC timer or counter. Nasaq's timers
+        and counters are the S7-300/400 SFBs (TIME, INT), so only those types are accepted."""
+        if not is_s7_1500(self.scope.index.profile):
+            first = next(iter(attributes.items()))
+            what = f"{{{first[0]} := '{first[1]}'}}"
+            self.scope.report("STL500", node.loc, what=what, profile=self.scope.index.profile)
+            return False
+        for name, value in attributes.items():
+            supported = INSTRUCTION_TYPES.get(name.casefold())
+            if supported is not None and value.casefold() != supported.casefold():
+                self.scope.report(
+                    "STL602", node.loc, attribute=name, value=value, supported=supported
+                )
+                return False
+        return True
+
     def instance(self, node: ast.InstrNode, block: BlockRef) -> BlockRef | bool | None:
         is_fb = block.kind in (BlockKind.FB, BlockKind.SFB)
         if len(node.operands) < 2:
@@ -306,7 +330,7 @@ class CallLowerer:
                     db=f"DB {db.number}",
                     block=f"{block.kind.value} {block.number}",
                 )
-        elif info.db_type != fb_type:
+        elif info.db_type != fb_type and not _same_layout(info.db_type, fb_type):
             self.scope.report(
                 "STL222", node.loc, db=f"DB {db.number}", block=f"{block.kind.value} {block.number}"
             )
@@ -435,3 +459,12 @@ def _call_key(node: ast.InstrNode) -> tuple[object, ...] | None:
             return None
         key += (arg.name, value)
     return tuple(key)
+
+
+def _same_layout(db_type: object, fb_type: BlockType) -> bool:
+    """An instance of one IEC timer SFB serves the others (TP, TON and TOF share one interface):
+    TIA Portal's IEC_TIMER instance DB is called as ``"DB".TP(...)`` or ``.TON(...)``."""
+    if not isinstance(db_type, BlockType) or db_type.kind != "SFB" or fb_type.kind != "SFB":
+        return False
+    mine = SFB_INTERFACES.get(db_type.number)
+    return mine is not None and mine is SFB_INTERFACES.get(fb_type.number)

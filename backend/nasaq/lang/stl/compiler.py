@@ -16,8 +16,9 @@ from typing import Any
 from nasaq.diagnostics import Diagnostic, Severity
 from nasaq.ir import Block, BlockKind, Program, Variable
 from nasaq.lang.layout import variables
-from nasaq.lang.profiles import DEFAULT_PROFILE
-from nasaq.lang.stl import ast
+from nasaq.lang.limits import MAX_SOURCE_CHARS, MAX_SOURCE_LINES, max_db_bytes
+from nasaq.lang.profiles import DEFAULT_PROFILE, is_s7_1500
+from nasaq.lang.stl import ast, converting
 from nasaq.lang.stl.addresses import AddressError, parse_address
 from nasaq.lang.stl.bind import BlockInfo, ProgramIndex
 from nasaq.lang.stl.calls import AutoInstance
@@ -26,21 +27,20 @@ from nasaq.lang.stl.diag import problem, sort_key
 from nasaq.lang.stl.library import LIBRARY_FILE, add_library_blocks
 from nasaq.lang.stl.lower import CodeLowerer, LoweredCode, Shared, apply_code
 from nasaq.lang.stl.mnemonics import detect
+from nasaq.lang.stl.numbering import number_blocks
 from nasaq.lang.stl.parse import ParseResult, parse_source
 from nasaq.lang.stl.resolve import Scope
 from nasaq.lang.stl.symbols import SYMBOL_TABLE_SUFFIXES, SymbolTable, read_symbol_table
 from nasaq.lang.types import BlockType, StructType, type_text
 
 STL_SUFFIXES = (".awl", ".stl")
-SCL_SUFFIXES = (".scl",)
+# TIA Portal exports a DB as ``.db`` and a PLC data type as ``.udt``: SCL syntax in both exports.
+SCL_SUFFIXES = (".scl", ".db", ".udt")
 LAD_SUFFIXES = (".lad", ".fbd")  # nasaq.lang.lad.text.SUFFIXES
 GRAPH_SUFFIXES = (".graph",)  # nasaq.lang.graph.text.SUFFIXES
 WATCH_TABLE_SUFFIXES = (".vat",)  # nasaq.workbench.watch_table: project files, not program
 CPU_PROPERTIES_SUFFIXES = (".properties",)  # nasaq.workbench.cpu_properties: not program
 PLANT_SUFFIXES = (".plant",)  # nasaq.plants.plant_file: the project's virtual plant, not program
-# A whole-project export of a large plant is a few MB; anything bigger is not an STL source anyone
-# wrote, and the parser (about 7 µs per token) would make the user wait for nothing.
-MAX_SOURCE_CHARS = 4 * 1024 * 1024
 
 
 @dataclass(frozen=True, slots=True)
@@ -132,7 +132,8 @@ class _Compiler:
         self.diagnostics: list[Diagnostic] = []
         self.symbols = SymbolTable()
         self.files: list[_File] = []
-        self.index = ProgramIndex(self.symbols, test_ops)
+        self.index = ProgramIndex(self.symbols, test_ops, profile)
+        self.index.profile = profile
         self.program = Program()
         self.auto: dict[int, AutoInstance] = {}
         self.lowered: dict[tuple[BlockKind, int], LoweredCode] = {}
@@ -141,6 +142,7 @@ class _Compiler:
         self.scl_lines: dict[str, list[str]] = {}
         self.generated: list[tuple[str, ast.BlockNode]] = []
         self.lad_files: dict[str, Any] = {}  # name -> nasaq.lang.lad.compile.LoweredFile
+        self.unnumbered: set[int] = set()  # ids of the block nodes numbering could not number
 
     def read(self, sources: list[SourceFile]) -> None:
         for source in sources:
@@ -153,6 +155,8 @@ class _Compiler:
             if suffix in SYMBOL_TABLE_SUFFIXES or suffix in WATCH_TABLE_SUFFIXES:
                 continue
             if suffix in CPU_PROPERTIES_SUFFIXES or suffix in PLANT_SUFFIXES:
+                continue
+            if self.too_many_lines(source):
                 continue
             if suffix in SCL_SUFFIXES:
                 self.read_scl(source)
@@ -188,6 +192,20 @@ class _Compiler:
             file.language = _language(file, self.mnemonics)
             self.files.append(file)
         self._publish_symbols()
+
+    def too_many_lines(self, source: SourceFile) -> bool:
+        """STL151 for a source of more lines than ``limits.MAX_SOURCE_LINES``, refused before
+        it is read: it would take the parser and checker minutes."""
+        text = source.text
+        lines = (text.count("\n") if isinstance(text, str) else text.count(b"\n")) + 1
+        if lines <= MAX_SOURCE_LINES:
+            return False
+        where = ast.Loc(1, 1, 1, 1)
+        found = problem(
+            "STL151", source.name, where, file=source.name, lines=lines, limit=MAX_SOURCE_LINES
+        )
+        self.diagnostics.append(found)
+        return True
 
     def _publish_symbols(self) -> None:
         table = self.symbols.symbols.values()
@@ -251,8 +269,57 @@ class _Compiler:
         file.language = _language(file, self.mnemonics)
         self.files.append(file)
 
+    def converting_blocks(self) -> None:
+        """SCALE/UNSCALE (FC 105/106) where the program calls them and lacks them."""
+        items = (item for file in self.files for item in _code_items(file))
+        blocks = [node for file in self.files for node in file.parsed.source.blocks]
+        named = {node.ident.upper() for node in blocks if node.ident_quoted}
+        named |= {block.name.text.upper() for source in self.scl_sources for block in source.blocks}
+        wanted = converting.called(items, self.symbols, named)
+        if not wanted:
+            return
+        scl_ids = [block.name.text for source in self.scl_sources for block in source.blocks]
+        used = converting.fc_numbers([node.ident for node in blocks] + scl_ids)
+        for text in converting.sources(wanted, self.symbols, used):
+            parsed = parse_source(converting.LIBRARY_FILE, text)
+            self.diagnostics += parsed.diagnostics
+            self.files.append(_File(converting.LIBRARY_FILE, parsed, text.split("\n")))
+
+    def number(self) -> None:
+        """Numbers the blocks named by a symbol no table defines, as TIA does (``numbering``)."""
+        self.converting_blocks()
+        used: list[tuple[BlockKind, int]] = []
+        for source in self.scl_sources:
+            for scl_block in source.blocks:
+                if scl_block.name.absolute:
+                    try:
+                        parsed = parse_address(scl_block.name.text)
+                    except AddressError:
+                        continue
+                    if parsed.block is not None:
+                        used.append((parsed.block, parsed.number))
+        plain = ((file.name, node) for file in self.files for node in file.parsed.source.blocks)
+        self.diagnostics += number_blocks(plain, self.symbols, used, self.profile, self.unnumbered)
+        self._publish_symbols()
+
+    def check_access(self, node: ast.BlockNode, file: str) -> None:
+        """``{ S7_Optimized_Access := 'TRUE' }``: only the S7-1200/1500 family has optimized
+        blocks (there Nasaq lays them out as standard ones: STL reaches them symbolically)."""
+        if is_s7_1500(self.profile):
+            return
+        for item in node.head:
+            if isinstance(item, ast.AttributesNode):
+                for name, value in item.values.items():
+                    if name.casefold() == "s7_optimized_access" and value.upper() == "TRUE":
+                        what = "an optimized block"
+                        where = item.loc
+                        self.diagnostics.append(
+                            problem("STL500", file, where, what=what, profile=self.profile)
+                        )
+
     def register(self) -> list[tuple[BlockInfo, _File]]:
         registered: list[tuple[BlockInfo, _File]] = []
+        self.number()
         for file in self.files:
             nodes = list(file.parsed.source.blocks)
             loose = file.parsed.source.loose_code
@@ -263,6 +330,8 @@ class _Compiler:
                     ast.BlockNode("ORGANIZATION_BLOCK", "OB 1", False, where, where, code=loose)
                 )
             for node in nodes:
+                if id(node) in self.unnumbered:
+                    continue  # STL600 said why
                 for item in node.head:
                     if isinstance(item, ast.VarSectionNode):
                         _attach_comments(item.decls, file.parsed.comments)
@@ -271,6 +340,7 @@ class _Compiler:
                 info = self.index.register(node, file.name, file.language)
                 if info is not None:
                     registered.append((info, file))
+                    self.check_access(node, file.name)
         from nasaq.lang.scl.project import SclUnit  # SCL builds on this package
 
         unit = SclUnit(self.scl_sources, self.symbols, self.profile) if self.scl_sources else None
@@ -384,20 +454,43 @@ class _Compiler:
                 return  # a system FB whose interface Nasaq does not know: the CPU lays it out
         slots, size = self.index.slots_of_type(data_type, info)
         block.interface = variables(slots)
+        if self.db_too_large(info.file, info.node.loc, info.label, size):
+            return
         builder = DataBuilder(self.index.layout, size, info.file)
         builder.defaults(slots)
-        assigns = [item for item in info.node.db_values if isinstance(item, ast.DbAssignNode)]
+        assigns = [
+            item
+            for item in info.node.db_values
+            if isinstance(item, ast.DbAssignNode)
+            and not (isinstance(item.path[0], str) and item.path[0].upper() in info.untyped)
+        ]
         builder.actual_values(slots, assigns)
         block.data = bytes(builder.data)
         self.diagnostics += builder.diagnostics
 
+    def db_too_large(self, file: str, loc: ast.Loc | None, label: str, size_bits: int) -> bool:
+        """STL152 for a data block larger than the profile's limit (``limits.max_db_bytes``):
+        its image is not built (a declared ARRAY[0..2000000000] would take gigabytes)."""
+        limit = max_db_bytes(self.profile)
+        size = size_bits // 8
+        if size <= limit:
+            return False
+        params = {"name": label, "size": size, "limit": limit, "profile": self.profile}
+        self.diagnostics.append(problem("STL152", file, loc or ast.Loc(1, 1, 1, 1), **params))
+        return True
+
     def auto_instance(self, auto: AutoInstance) -> None:
-        block = Block(BlockKind.DB, auto.db, file=auto.file, instance_of=auto.fb.number)
+        symbol = self.symbols.block_symbol(BlockKind.DB, auto.db)
+        name = symbol.name if symbol is not None else ""
+        block = Block(BlockKind.DB, auto.db, name=name, file=auto.file, instance_of=auto.fb.number)
         block.attributes["instance_of"] = f"{auto.fb.kind} {auto.fb.number}"
         expansion = self.index._expand(auto.fb)
         if isinstance(expansion, list):
             slots, size = self.index.layout.instance(expansion)
             block.interface = variables(slots)
+            if self.db_too_large(auto.file, None, f"DB {auto.db}", size):
+                self.program.add(block)
+                return
             builder = DataBuilder(self.index.layout, size, auto.file)
             builder.defaults(slots)
             block.data = bytes(builder.data)

@@ -101,6 +101,8 @@ def parse_int(digits: str, base: int, text: str) -> int:
     clean = digits.replace("_", "")
     if not clean:
         raise _bad(text, "digits are missing")
+    if base == 10 and clean.isdigit() and len(clean.lstrip("0")) > 40:  # past every S7 type
+        clean = "1" + "0" * 40
     try:
         return int(clean, base)
     except ValueError:
@@ -108,7 +110,8 @@ def parse_int(digits: str, base: int, text: str) -> int:
 
 
 def decimal_int(text: str) -> Constant:
-    value = int(text)
+    # Python converts at most 4,300 digits; anything past 10 is out of range anyway.
+    value = int(text) if len(text.lstrip("+-0")) <= 20 else 1 << 70
     if not -32768 <= value <= 32767:
         raise _range(text, "INT", hint="; write L#" + text.lstrip("+") + " for a DINT")
     return Constant(ConstType.INT, value & 0xFFFF, value, text)  # a 16-bit immediate
@@ -138,8 +141,15 @@ def chars(text: str, raw: str) -> Constant:
     return Constant(ConstType.CHAR, pattern, pattern, text)
 
 
+_SIGNED = re.compile(r"[+-]?\d+")
+
+
 def byte_list(text: str) -> Constant:
-    values = [int(part) for part in text[text.index("(") + 1 : -1].split(",")]
+    parts = [part.strip() for part in text[text.index("(") + 1 : -1].split(",")]
+    if not all(_SIGNED.fullmatch(part) for part in parts):
+        raise _bad(text, "B#( ) takes 2 or 4 bytes")
+    # A part of more than 3 digits is out of a byte's range; int() refuses 4,300 anyway.
+    values = [int(part) if len(part) <= 6 else 256 for part in parts]
     if len(values) not in (2, 4):
         raise _bad(text, "B#( ) takes 2 or 4 bytes")
     pattern = 0
@@ -161,8 +171,13 @@ def duration_ms(body: str, text: str) -> int:
     for unit, amount in match.groupdict().items():
         if amount is not None:
             total += float(amount) * _UNIT_MS[unit]
+    if not total < _DURATION_CAP:  # 9999...D or an infinite float: out of every time range
+        total = _DURATION_CAP  # the caller's range check refuses it with the type's range
     ms = round(total)
     return -ms if negative else ms
+
+
+_DURATION_CAP = float(2**62)  # ms; above LTIME's range too
 
 
 def s5time(body: str, text: str) -> Constant:
@@ -177,16 +192,16 @@ def s5time(body: str, text: str) -> Constant:
 
 def time(body: str, text: str) -> Constant:
     ms = duration_ms(body, text)
-    if not -(2**31) < ms < 2**31:
+    if not -(2**31) <= ms < 2**31:  # T#-24D_20H_31M_23S_648MS is the least TIME, -2^31 ms
         raise _range(text, "TIME")
     return Constant(ConstType.TIME, ms & MASK32, ms, text)
 
 
 def date_days(body: str, text: str) -> int:
     try:
-        year, month, day = (int(part) for part in body.split("-"))
+        year, month, day = (_field(part) for part in body.split("-"))
         days = (datetime.date(year, month, day) - EPOCH).days
-    except ValueError:
+    except (ValueError, OverflowError):
         raise _bad(text, "a date is written like 1990-1-31") from None
     if not 0 <= days <= 65378:
         raise _range(text, "DATE", hint=" (1990-1-1 to 2168-12-31)")
@@ -197,12 +212,18 @@ def tod_ms(body: str, text: str) -> int:
     match = re.match(r"^(\d+):(\d+)(?::(\d+)(?:\.(\d{1,3}))?)?$", body)
     if match is None:
         raise _bad(text, "a time of day is written like 13:30:00.000")
-    hours, minutes = int(match[1]), int(match[2])
-    seconds = int(match[3] or 0)
+    hours, minutes = _field(match[1]), _field(match[2])
+    seconds = _field(match[3] or "0")
     millis = int((match[4] or "0").ljust(3, "0"))
     if hours > 23 or minutes > 59 or seconds > 59:
         raise _range(text, "TIME_OF_DAY")
     return ((hours * 60 + minutes) * 60 + seconds) * 1000 + millis
+
+
+def _field(digits: str) -> int:
+    """A date or time field; one of more than 9 digits is out of every range and stands as
+    10**9 (Python converts at most 4,300 digits, datetime none past 32 bits)."""
+    return int(digits) if len(digits.lstrip("0")) <= 9 else 10**9
 
 
 def date_and_time_bytes(body: str, text: str) -> bytes:
@@ -210,10 +231,10 @@ def date_and_time_bytes(body: str, text: str) -> bytes:
     match = re.match(r"^(\d+)-(\d+)-(\d+)-(.*)$", body)
     if match is None:
         raise _bad(text, "a date and time is written like 1990-1-1-13:30:00.000")
-    year, month, day = int(match[1]), int(match[2]), int(match[3])
+    year, month, day = _field(match[1]), _field(match[2]), _field(match[3])
     try:
         date = datetime.date(year, month, day)
-    except ValueError:
+    except (ValueError, OverflowError):
         raise _bad(text, "not a date") from None
     if not 1990 <= year <= 2089:
         raise _range(text, "DATE_AND_TIME", hint=" (1990 to 2089)")
@@ -243,6 +264,8 @@ def pointer(text: str) -> Constant:
     match = _POINTER.match(body)
     if match is None:
         raise _bad(text, "a pointer is written like P#M10.0 or P#10.0")
+    if len(match["byte"].lstrip("0")) > 9 or len(match["bit"]) > 9:  # before int(): 4,300 digits
+        raise _range(text, "POINTER")
     byte, bit = int(match["byte"]), int(match["bit"])
     if bit > 7:
         raise _bad(text, "the bit number must be 0 to 7")

@@ -13,6 +13,9 @@ import struct
 from nasaq.diagnostics import Diagnostic
 from nasaq.ir import ConstType
 from nasaq.lang.layout import Layout, Slot
+from nasaq.lang.limits import MAX_INIT_VALUES
+from nasaq.lang.profiles import S7_1500_TYPES
+from nasaq.lang.s7_1500_values import initial_bytes
 from nasaq.lang.stl import ast, constants
 from nasaq.lang.stl.addresses import AddressError, parse_address
 from nasaq.lang.stl.build import unquote_chars
@@ -54,12 +57,37 @@ class BadValueError(ValueError):
     pass
 
 
+def _wchar_bytes(value: ast.ValueNode) -> bytes:
+    if value.kind == "CHARS":
+        units = unquote_chars(value.text).encode("utf-16-be", errors="surrogatepass")
+        if len(units) != 2:
+            raise BadValueError
+        return units
+    try:
+        code = (
+            int(value.text)
+            if value.kind == "NUMBER"
+            else constants.parse_literal(value.kind, value.text, None).pattern
+        )
+    except (constants.ConstantError, ValueError, OverflowError):
+        raise BadValueError from None
+    if not 0 <= code <= 0xFFFF:
+        raise BadValueError
+    return code.to_bytes(2, "big")
+
+
 def scalar_bytes(data_type: DataType, value: ast.ValueNode) -> bytes | int:
     """Bytes of one value (an int 0/1 for BOOL); raises BadValueError when it does not fit."""
     if isinstance(data_type, StringType):
         if value.kind != "CHARS":
             raise BadValueError
         text = unquote_chars(value.text)
+        if data_type.wide:  # WSTRING: WORD lengths, UTF-16 code units (``lang.wide_text``)
+            units = text.encode("utf-16-be", errors="surrogatepass")
+            if len(units) // 2 > data_type.length:
+                raise BadValueError
+            header = data_type.length.to_bytes(2, "big") + (len(units) // 2).to_bytes(2, "big")
+            return header + units.ljust(2 * data_type.length, b"\0")
         if len(text) > data_type.length:
             raise BadValueError
         body = text.encode("latin-1", errors="replace").ljust(data_type.length, b"\0")
@@ -93,7 +121,16 @@ def scalar_bytes(data_type: DataType, value: ast.ValueNode) -> bytes | int:
         return struct.pack(">HI", db, constant.pattern)
     if name in ("ANY",):
         raise BadValueError
+    if name == "WCHAR":  # one UTF-16 code unit (``nasaq.lang.wide_text``)
+        return _wchar_bytes(value)
+    if name in S7_1500_TYPES:  # SINT ... LTIME: ``nasaq.lang.s7_1500_values``
+        found = initial_bytes(name, value.kind, text)
+        if found is None:
+            raise BadValueError
+        return found
     if value.kind == "NUMBER" and name in _LIMITS:
+        if len(text.lstrip("+-0")) > 20:  # out of every range; int() refuses 4,300 digits
+            raise BadValueError
         number = int(text)
         low, high = _LIMITS[name]
         if not low <= number <= high:
@@ -129,14 +166,22 @@ def _number_of(value: ast.ValueNode) -> int:
 
 
 def flatten(values: list[ast.InitValue]) -> list[ast.ValueNode]:
+    """The values with their repeat factors expanded; at most ``MAX_INIT_VALUES`` (and one
+    more, so that a caller counting them still sees too many): ``2147483648 (TRUE)`` would
+    otherwise loop for minutes."""
     flat: list[ast.ValueNode] = []
     for value in values:
+        if len(flat) > MAX_INIT_VALUES:
+            break
         if isinstance(value, ast.RepeatNode):
-            for _ in range(value.count):
-                flat.extend(flatten(value.values))
+            inner = flatten(value.values)
+            if not inner:
+                continue
+            times = min(value.count, MAX_INIT_VALUES // len(inner) + 1)
+            flat.extend(inner * times)
         else:
             flat.append(value)
-    return flat
+    return flat[: MAX_INIT_VALUES + 1]
 
 
 class DataBuilder:
@@ -150,7 +195,11 @@ class DataBuilder:
         """Declared initial values (and STRING headers) of ``slots`` and their members."""
         for slot in slots:
             if isinstance(slot.type, StringType):
-                self.data[slot.offset_bits // 8] = slot.type.length
+                start = slot.offset_bits // 8
+                if slot.type.wide:  # WSTRING: the maximum length is a WORD
+                    self.data[start : start + 2] = slot.type.length.to_bytes(2, "big")
+                else:
+                    self.data[start] = slot.type.length
             elif slot.type == _DT:  # STEP 7's default: DT#1990-01-01-00:00:00.000, a Monday
                 start = slot.offset_bits // 8
                 self.data[start : start + 8] = _DT_DEFAULT

@@ -128,7 +128,7 @@ def format_values(values: Sequence[ast.InitValue]) -> str:
 
 def _symbol(node: ast.SymbolNode) -> str:
     if node.local:
-        head = "#" + node.name
+        head = "#" + _name(node.name)
     elif node.absolute_db:
         head = node.name
     else:
@@ -154,6 +154,11 @@ def _member(name: str) -> str:
     if _IDENT.fullmatch(name) is None or name.upper() in _RESERVED or _is_address(name):
         return f'"{name}"'
     return name
+
+
+def _name(name: str) -> str:
+    """A declared name, quoted as TIA Portal writes one that is no identifier (``"Start 1"``)."""
+    return name if _IDENT.fullmatch(name) is not None else f'"{name}"'
 
 
 def _is_address(word: str) -> bool:
@@ -286,6 +291,9 @@ class _Printer:
         if isinstance(body, ast.RefTypeNode):
             self.lines.append(_block_id(body.text, body.quoted))  # an instance DB: ``FB 12``
             return
+        if isinstance(body, ast.NamedTypeNode):
+            self.lines.append(body.name)  # TIA: the instance DB of a system FB (``TON``)
+            return
         if block.head:
             self.lines.append("")  # as before the interface of a code block
         self.typed("  ", body, " ;", 2)
@@ -294,7 +302,7 @@ class _Printer:
         parts: list[str] = []
         for step in node.path:
             if isinstance(step, str):
-                parts.append("." + step if parts else step)
+                parts.append("." + _name(step) if parts else _name(step))
             else:
                 parts.append("[" + ", ".join(map(str, step)) + "]")
         self.lines.append(f"   {''.join(parts)} := {format_values(node.values)};")
@@ -302,7 +310,7 @@ class _Printer:
     # ---- declarations -----------------------------------------------------------------------
 
     def decl(self, decl: ast.VarDeclNode, indent: int) -> None:
-        name = decl.name
+        name = _name(decl.name)
         if decl.attributes:
             name = f"{name} {_attributes(decl.attributes)}"
         suffix = f"  := {format_values(decl.init)};" if decl.init else " ;"
@@ -365,7 +373,6 @@ class _Printer:
 
     def instr(self, instr: ast.InstrNode, lead: str) -> None:
         """``lead`` is the six-column indentation, or the label that stands in it."""
-        lines = self.lines
         operands = instr.operands
         mnemonic = instr.mnemonic
         if instr.param_line:  # ``NAME := operand`` under a CALL without parentheses
@@ -380,17 +387,34 @@ class _Printer:
         else:
             line = f"{lead}{mnemonic.ljust(5)} " + ", ".join(map(format_operand, operands))
         args = instr.args
+        if instr.attributes:  # TIA: on a line of its own between the CALL and its parameters
+            self.finish(line, instr)
+            self.ends(_ARG_INDENT + _attributes(instr.attributes), None, args)
+            return
+        self.ends(line, instr, args)
+
+    def ends(
+        self, line: str, instr: ast.InstrNode | None, args: list[ast.CallArgNode] | None
+    ) -> None:
+        """``line`` with the CALL's parameter list (or ``;``); its comment when ``instr``."""
+        lines = self.lines
         if args is None:
-            self.finish(line + ";", instr)
+            self.close(line + ";", instr)
         elif not args:
-            self.finish(line + " ();", instr)
+            self.close(line + " ();", instr)
         else:
-            self.finish(line + " (", instr)
+            self.close(line + " (", instr)
             last = len(args) - 1
             for number, arg in enumerate(args):
                 value = "" if arg.value is None else format_operand(arg.value)
                 end = ");" if number == last else ","
-                lines.append(f"{_ARG_INDENT}{arg.name.ljust(_ARG_WIDTH)} := {value}{end}")
+                lines.append(f"{_ARG_INDENT}{_name(arg.name).ljust(_ARG_WIDTH)} := {value}{end}")
+
+    def close(self, line: str, instr: ast.InstrNode | None) -> None:
+        if instr is None:
+            self.lines.append(line)
+        else:
+            self.finish(line, instr)
 
     def finish(self, line: str, instr: ast.InstrNode) -> None:
         if self.comment is not None:

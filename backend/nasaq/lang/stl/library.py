@@ -32,7 +32,7 @@ from nasaq.lang.types import DataType, StringType, type_text
 
 LIBRARY_FILE = "<IEC library>"
 _WHERE = ast.Loc(1, 1, 1, 1)
-_CALL_SPELLINGS = frozenset(map("".join, product(*zip("call", "CALL", strict=True))))
+CALL_SPELLINGS = frozenset(map("".join, product(*zip("call", "CALL", strict=True))))
 
 
 def add_library_blocks(
@@ -64,7 +64,7 @@ def _called(
     for node in nodes:
         for item in node.code:
             # every instruction of the program passes here: one set lookup for most of them
-            if type(item) is not ast.InstrNode or item.mnemonic not in _CALL_SPELLINGS:
+            if type(item) is not ast.InstrNode or item.mnemonic not in CALL_SPELLINGS:
                 continue
             if not item.operands:
                 continue
@@ -111,7 +111,7 @@ def _number(index: ProgramIndex, symbols: SymbolTable, function: LibraryFunction
 
 def _type(data_type: DataType) -> ast.NamedTypeNode:
     if isinstance(data_type, StringType):
-        return ast.NamedTypeNode("STRING", data_type.length, _WHERE)
+        return ast.NamedTypeNode(data_type.name, data_type.length, _WHERE)
     return ast.NamedTypeNode(type_text(data_type), None, _WHERE)
 
 

@@ -22,6 +22,7 @@ from nasaq.ir import (
     Operand,
     Origin,
 )
+from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.stl import ast
 from nasaq.lang.stl.calls import AutoInstance, CallLowerer
 from nasaq.lang.stl.check import JUMPS, RULES, check_operand, expected_text
@@ -281,8 +282,8 @@ class CodeLowerer:
         if name in self.label_lines:
             self.scope.report("STL208", label.loc, label=label.name, line=self.label_lines[name])
             return
-        if len(name) > MAX_LABEL:
-            self.scope.report("STL209", label.loc, label=label.name)
+        if len(name) > MAX_LABEL and not is_s7_1500(self.scope.index.profile):
+            self.scope.report("STL209", label.loc, label=label.name)  # TIA's S7-1500: longer
         self.label_lines[name] = label.loc.line
         self.out.labels[name] = len(self.out.code)
         instruction.label = name

@@ -32,6 +32,7 @@ from nasaq.lang.stl import ast
 from nasaq.lang.stl.build import loc
 from nasaq.lang.stl.diag import problem
 from nasaq.lang.stl.grammar import parser
+from nasaq.lang.stl.nesting import limit_nesting
 
 MAX_SYNTAX_ERRORS = 50
 
@@ -115,6 +116,7 @@ _NAMES = {
 }
 # What ``NewlineFilter.keep`` looks at besides newlines, and the modes where a newline counts.
 _MODE_TOKENS = _CODE_BLOCKS | _DATA_BLOCKS | _BLOCK_ENDS | {"BEGIN", "_LPAR", "_RPAR"}
+_MODE_TOKENS |= {"LBRACE", "RBRACE"}
 _NEWLINE_MODES = frozenset({"top", "code"})
 # After these a newline ends no statement (the parser would take it as an empty code item).
 _NO_STATEMENT_BEFORE = frozenset(
@@ -122,6 +124,10 @@ _NO_STATEMENT_BEFORE = frozenset(
 )
 _BINARY = re.compile(r"[\x00-\x08\x0e-\x19\x7f]")
 _REST_OF_STATEMENT = re.compile(r"[^\n;]*")
+# TIA Portal writes a CALL's parameter list on the lines after the CALL ("CALL #V1" newline
+# "(  Open := ...", or first "{time_type := 'Time'}"): there the newline after the CALL ends
+# nothing.
+_PARAMETERS_FOLLOW = re.compile(r"\s*(?://[^\n]*\s*)*[({]")
 
 
 @dataclass(slots=True)
@@ -156,9 +162,9 @@ class NewlineFilter:
             self.mode = "top"
             self.depth = 0
         elif self.mode in ("top", "code"):  # code outside blocks is code too (implicit OB 1)
-            if kind == "_LPAR":
+            if kind == "_LPAR" or kind == "LBRACE":  # a CALL's parameters or attributes
                 self.depth += 1
-            elif kind == "_RPAR" and self.depth:
+            elif (kind == "_RPAR" or kind == "RBRACE") and self.depth:
                 self.depth -= 1
         return True
 
@@ -290,6 +296,8 @@ class _Driver(RecoveringDriver):
         newlines = self.filter
         state = self.state
         previous = ""
+        calling = False  # in a CALL statement that has no parameter list yet
+        text = self.text
         while True:
             try:
                 for token in lexer.lex(state):
@@ -299,7 +307,15 @@ class _Driver(RecoveringDriver):
                             continue
                         if previous in _NO_STATEMENT_BEFORE and not self.skipping:
                             continue
+                        if calling:
+                            if _PARAMETERS_FOLLOW.match(text, token.end_pos or 0):
+                                continue
+                            calling = False
                     else:
+                        if kind == "WORD_OP":
+                            calling = len(token) == 4 and token.upper() == "CALL"
+                        elif kind == "_LPAR" or (kind == "_SEMI" and not newlines.depth):
+                            calling = False
                         if kind in _NAME_TOKENS:
                             reserved = _RESERVED.get(token.upper())
                             if reserved is not None:
@@ -414,7 +430,10 @@ class _Driver(RecoveringDriver):
         return "the file"
 
     def harvest(self) -> list[Any]:
-        """Whatever complete items sit on the parser's stack when parsing had to stop."""
+        """Whatever complete items sit on the parser's stack when parsing had to stop: the
+        blocks already closed, and code outside any block. The code of a block still open
+        belongs to that block, whose header is gone: it is dropped, never made loose code
+        (which would run as an OB 1 the user did not write)."""
         found: list[Any] = []
 
         def walk(value: Any) -> None:
@@ -428,6 +447,8 @@ class _Driver(RecoveringDriver):
                     walk(child)
 
         for value in self.state.value_stack:
+            if isinstance(value, Token) and value.type in _CODE_BLOCKS | _DATA_BLOCKS:
+                break
             walk(value)
         return found
 
@@ -452,6 +473,7 @@ def parse_source(file: str, text: str, lark: Lark | None = None) -> ParseResult:
             gc.enable()
     blocks = [item for item in items if isinstance(item, ast.BlockNode)]
     loose = [item for item in items if not isinstance(item, ast.BlockNode)]
+    driver.diagnostics += limit_nesting(file, blocks)  # what the recursive passes cannot take
     result = ParseResult(ast.SourceNode(file, blocks, loose), driver.diagnostics)
     result.comments = line_comments(text)
     return result

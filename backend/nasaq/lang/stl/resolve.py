@@ -296,9 +296,11 @@ class Resolver:
                 return Resolved(StatusCondition(STATUS_WORDS[name]), None, text)
             if name in constants.BOOLEANS:
                 return Resolved(constants.boolean(name), None, text)
-            symbol = self.index.symbols.get(node.name)
+            symbol = self.index.symbols.lookup(node.name)
             if symbol is not None:
                 return self.symbol_target(symbol.parsed, symbol.type, [], node.loc, text)
+            if self.declares_locally(name):  # STEP 7 Classic: a local name without its #
+                return self.local(ast.SymbolNode(node.name, True, [], node.loc), text)
         self.scope.report("STL205", node.loc, name=text)
         return None
 
@@ -446,8 +448,37 @@ class Resolver:
             for param in block.params:
                 if param.name.upper() == wanted:
                     return self.parameter(param.index, param.name, param.type, node, text)
+        constant = block.constants.get(wanted)
+        if constant is not None:
+            return self.local_constant(constant, node, text)
+        if wanted in block.untyped:
+            return None  # its type was reported at the declaration
         self.scope.report("STL206", node.loc, name=f"#{node.name}", block=block.label)
         return None
+
+    def declares_locally(self, wanted: str) -> bool:
+        """Whether the block declares ``wanted`` (upper case): a variable, parameter or constant."""
+        block = self.scope.block
+        return (
+            wanted in self.locals()
+            or wanted in block.constants
+            or wanted in block.untyped
+            or any(param.name.upper() == wanted for param in block.params)
+        )
+
+    def local_constant(self, constant: Field, node: ast.SymbolNode, text: str) -> Resolved | None:
+        """``#Limit`` of a TIA ``VAR CONSTANT`` section: its value, as if written in place."""
+        values = constant.initial if isinstance(constant.initial, list) else []
+        value = values[0] if len(values) == 1 else None
+        if node.path or not isinstance(value, ast.ValueNode):
+            self.scope.report("STL601", node.loc, name=text)
+            return None
+        if value.kind == "IDENT":
+            if value.text.upper() not in constants.BOOLEANS:
+                self.scope.report("STL601", node.loc, name=text)
+                return None
+            return Resolved(constants.boolean(value.text.upper()), None, text)
+        return self.literal(ast.LiteralNode(value.kind, value.text, node.loc), text)
 
     def parameter(
         self, index: int, name: str, data_type: DataType, node: ast.SymbolNode, text: str
@@ -553,7 +584,7 @@ class Resolver:
             if parsed is None:
                 return None
             return self.symbol_target(parsed, "", node.path, node.loc, text)
-        symbol = self.index.symbols.get(node.name)
+        symbol = self.index.symbols.lookup(node.name)
         if symbol is None:
             self.scope.report("STL205", node.loc, name=f'"{node.name}"')
             return None
@@ -596,6 +627,8 @@ class Resolver:
         if db is None or db.db_type is None:
             self.scope.report("STL213", where, block=f"DB {parsed.number}")
             return None
+        if isinstance(first, str) and first.upper() in db.untyped:
+            return None  # its type was reported at the declaration
         slot = self.walk(self.index.db_root(db), path, where, text)
         if slot is None:
             return None

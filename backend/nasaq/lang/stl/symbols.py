@@ -20,8 +20,10 @@ from nasaq.lang.stl.addresses import AddressError, Parsed, parse_address
 from nasaq.lang.stl.ast import Loc
 from nasaq.lang.stl.diag import problem
 from nasaq.lang.stl.symbol_fit import misfit
+from nasaq.lang.system_blocks import SFB_NAMES, SFC_NAMES
 
 SYMBOL_TABLE_SUFFIXES = (".sdf", ".asc", ".seq", ".csv")
+SYSTEM_FILE = "<system blocks>"
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,6 +45,15 @@ class SymbolTable:
 
     def get(self, name: str) -> Symbol | None:
         return self.symbols.get(name.casefold())
+
+    def lookup(self, name: str) -> Symbol | None:
+        """``get``, else the system block STEP 7 and TIA Portal know by that name (``TON`` is
+        SFB 4) where no symbol of the program defines it."""
+        return self.symbols.get(name.casefold()) or self.system(name)
+
+    @staticmethod
+    def system(name: str) -> Symbol | None:
+        return _SYSTEM_SYMBOLS.get(name.casefold())
 
     def block_symbol(self, kind: str, number: int) -> Symbol | None:
         """The symbol naming a block (``"Main"`` for OB 1), if any (the first, should two)."""
@@ -147,3 +158,16 @@ def read_symbol_table(file: str, text: str, table: SymbolTable) -> list[Diagnost
             continue
         table.symbols[key] = symbol
     return diagnostics
+
+
+def _system_symbol(kind: str, number: int, name: str) -> Symbol:
+    address = f"{kind} {number}"
+    return Symbol(name, address, parse_address(address), kind, "", SYSTEM_FILE, 0)
+
+
+# The system blocks by their standard names (STEP 7's standard library symbols, TIA Portal's
+# instruction names): a source may name them without a symbol table.
+_SYSTEM_SYMBOLS: dict[str, Symbol] = {
+    **{name.casefold(): _system_symbol("SFB", n, name) for n, name in SFB_NAMES.items()},
+    **{name.casefold(): _system_symbol("SFC", n, name) for n, name in SFC_NAMES.items()},
+}

@@ -55,6 +55,9 @@ export const SCL_STANDARD_FUNCTIONS: readonly string[] = [
   'STRING_TO_CHAR', 'STRNG_DI', 'STRNG_I', 'STRNG_R', 'S_CD', 'S_CU', 'S_CUD', 'S_ODT', 'S_ODTS',
   'S_OFFDT', 'S_PEXT', 'S_PULSE', 'TAN', 'TIME_TO_DINT', 'TOD_TO_DINT', 'TRUNC', 'WORD_BCD_TO_INT',
   'WORD_TO_BLOCK_DB', 'WORD_TO_BOOL', 'WORD_TO_BYTE', 'WORD_TO_DWORD', 'WORD_TO_INT',
+  // TIA Portal's names (BCD, rounding, Unicode text)
+  'BCD16_TO_INT', 'BCD32_TO_DINT', 'BCD_TO_INT', 'CEIL', 'DINT_TO_BCD32', 'FLOOR', 'INT_TO_BCD',
+  'INT_TO_BCD16', 'STRING_TO_WSTRING', 'WSTRING_TO_STRING',
 ];
 
 // The address and literal terminals of grammars/scl.lark, as JavaScript regular expressions.
@@ -104,6 +107,8 @@ export const sclLanguage: languages.IMonarchLanguage = {
       [/(TITLE)([ \t]*)(=.*)$/, ['keyword', '', 'comment.title']],
       // TIA's REGION takes the rest of its line as its title.
       [/(REGION)(?![ \t]*:=)(?!\w)(.*)$/, ['keyword', 'comment.title']],
+      // ... and may write it again after END_REGION (up to a ";" or a comment).
+      [/(END_REGION)(?!\w)((?:[ \t]+(?![ \t]|\/\/|\(\*|\/\*)(?:[^\r\n;/(]|\/(?![/*])|\((?!\*))*)?)/, ['keyword', 'comment.title']],
       [/((?:AUTHOR|FAMILY|NAME|VERSION)(?!\w))([ \t]*)(:)(?!=)/, ['keyword', '', 'delimiter']],
       // A member after a ".": DB10.DW2, "Data".DX1.1, DB11.DW[i]
       [/(\.)(@dbAddress)/, ['delimiter', 'address']],
@@ -145,9 +150,11 @@ export const sclLanguage: languages.IMonarchLanguage = {
       [/\(\*/, 'comment', '@blockComment'],
       [/\/\*/, 'comment', '@cComment'],
     ],
+    // (* ... *) nests, as TIA Portal reads it (nasaq.lang.scl README, "Comments").
     blockComment: [
       [/\*\)/, 'comment', '@pop'],
-      [/[^*]+|\*/, 'comment'],
+      [/\(\*/, 'comment', '@push'],
+      [/[^*(]+|\*|\(/, 'comment'],
     ],
     cComment: [
       [/\*\//, 'comment', '@pop'],

@@ -79,6 +79,8 @@ export const PLC_TYPES: readonly string[] = [
   'BOOL', 'BYTE', 'CHAR', 'WORD', 'INT', 'S5TIME', 'DATE', 'DWORD', 'DINT', 'REAL', 'TIME',
   'TIME_OF_DAY', 'DATE_AND_TIME', 'POINTER', 'ANY', 'TIMER', 'COUNTER', 'BLOCK_FB', 'BLOCK_FC',
   'BLOCK_DB', 'BLOCK_SDB', 'TOD', 'DT', 'STRING', 'VOID',
+  // S7-1200/1500 only
+  'SINT', 'USINT', 'UINT', 'UDINT', 'LINT', 'ULINT', 'LREAL', 'LWORD', 'LTIME', 'WCHAR',
 ];
 
 // The address and constant terminals of grammars/stl.lark, as JavaScript regular expressions.

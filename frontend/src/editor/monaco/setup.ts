@@ -83,7 +83,7 @@ monaco.languages.registerDocumentFormattingEditProvider(STL_LANGUAGE_ID, {
     return formatted === text ? [] : [{ range: model.getFullModelRange(), text: formatted }];
   },
 });
-register(SCL_LANGUAGE_ID, ['.scl'], sclLanguage, sclConfiguration, sclFoldingRanges);
+register(SCL_LANGUAGE_ID, ['.scl', '.db', '.udt'], sclLanguage, sclConfiguration, sclFoldingRanges);
 // "Format Document" for SCL: the indentation of blocks, sections and statements (sclFormat.ts).
 monaco.languages.registerDocumentFormattingEditProvider(SCL_LANGUAGE_ID, {
   provideDocumentFormattingEdits: (model) => {

@@ -3,20 +3,22 @@
 from __future__ import annotations
 
 from nasaq.cpu import Cpu
+from nasaq.cpu.profile import Profile
 from nasaq.headless.addresses import as_real, parse_address, signed
 from nasaq.ir import Direct
 from nasaq.lang.stl import SourceFile, compile_sources
 
 
-def build(source: str, *more: SourceFile) -> Cpu:
-    """The program compiled without errors, started (OB100, RUN) and scanned once."""
-    result = compile_sources([SourceFile("prog.scl", source), *more])
+def build(source: str, *more: SourceFile, profile: str = "S7-300", scans: int = 1) -> Cpu:
+    """The program compiled for ``profile`` without errors, started (OB100, RUN) and scanned
+    ``scans`` times."""
+    result = compile_sources([SourceFile("prog.scl", source), *more], profile=profile)
     errors = [f"{d.code} {d.span} {d.message}" for d in result.diagnostics if d.severity == "error"]
     assert not errors, errors
-    cpu = Cpu(result.program, cycle_ms=10)
+    cpu = Cpu(result.program, profile=Profile(profile), cycle_ms=10)
     cpu.start()
     assert cpu.mode == "RUN", cpu.stop_reason
-    cpu.run(1)
+    cpu.run(scans)
     assert cpu.mode == "RUN", cpu.stop_reason
     return cpu
 

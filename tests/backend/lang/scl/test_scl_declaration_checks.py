@@ -29,7 +29,7 @@ DECLARATIONS: list[tuple[str, list[tuple[str, int, int]]]] = [
     ("r : REAL := 'A';", [("SCL214", L, 15)]),
     ("t : TIME := 5;", [("SCL214", L, 15)]),
     ("a : INT := 1.5;", [("SCL213", L, 14)]),
-    ("w : WORD := 5;", [("SCL213", L, 15)]),
+    ("w : WORD := -5;", [("SCL218", L, 15)]),  # 0..65535 fits (issue 20, tia_forms)
     ("k : INT; a : INT := k;", [("SCL243", L, 23)]),
     ("a : INT := zz + 1;", [("SCL243", L, 14)]),
     ("a : INT := WORD_TO_INT(W#16#1);", [("SCL243", L, 14)]),
@@ -54,13 +54,27 @@ PROGRAMS_OF_BLOCKS: list[tuple[str, list[tuple[str, int, int]]]] = [
         "FUNCTION_BLOCK FB1\nVAR_TEMP t : INT := 1; END_VAR\nBEGIN\nEND_FUNCTION_BLOCK\n",
         [("SCL245", 2, 21)],
     ),
+    # an FB's elementary in/out is kept in the instance (TIA's start value); a structured one
+    # is a pointer (issue 20, the gaps part)
     (
         "FUNCTION_BLOCK FB1\nVAR_IN_OUT io : INT := 1; END_VAR\nBEGIN\nEND_FUNCTION_BLOCK\n",
-        [("SCL245", 2, 24)],
+        [],
     ),
     (
+        (
+            "FUNCTION_BLOCK FB1\nVAR_IN_OUT s : STRUCT a : INT; END_STRUCT := 1; END_VAR\n"
+            "BEGIN\nEND_FUNCTION_BLOCK\n"
+        ),
+        [("SCL245", 2, 46)],
+    ),
+    # STEP 7 accepts an FC input's initial value, which does nothing: a warning, once per line
+    (
         "FUNCTION F : VOID\nVAR_INPUT p, q : INT := 1; END_VAR\nBEGIN\nEND_FUNCTION\n",
-        [("SCL245", 2, 25)],
+        [("SCL921", 2, 25)],
+    ),
+    (
+        "FUNCTION F : VOID\nVAR_IN_OUT p : INT := 1; END_VAR\nBEGIN\nEND_FUNCTION\n",
+        [("SCL245", 2, 23)],
     ),
     (
         "FUNCTION F : VOID\nVAR v : BOOL := TRUE; END_VAR\nBEGIN\nEND_FUNCTION\n",
@@ -140,7 +154,7 @@ DB_VALUES: list[tuple[str, list[tuple[str, int, int]]]] = [
 DB_BLOCKS: list[tuple[str, list[tuple[str, int, int]]]] = [
     # an instance DB has the FB's members, a DB of a UDT the UDT's
     ("DATA_BLOCK DB5 Motor\nBEGIN\n  speed := 5; count := 40000;\nEND_DATA_BLOCK\n", []),
-    ("DATA_BLOCK DB5 Motor\nBEGIN\n  speed := TRUE;\nEND_DATA_BLOCK\n", [("SCL214", 3, 12)]),
+    ("DATA_BLOCK DB5 Motor\nBEGIN\n  speed := TRUE;\nEND_DATA_BLOCK\n", [("SCL213", 3, 12)]),
     ("DATA_BLOCK DB5 U\nBEGIN\n  a := 1; b := 2.5;\nEND_DATA_BLOCK\n", []),
     ("DATA_BLOCK DB5 U\nBEGIN\n  a := 2.5;\nEND_DATA_BLOCK\n", [("SCL213", 3, 8)]),
 ]

@@ -30,13 +30,14 @@ WORDS = [
     for terminal in GRAMMAR_TERMINALS
     if terminal.pattern.type == "str"
     for case in (str.upper, str.lower)
-]
+] + ["END_REGION", "end_region x"]  # a keyword written as a regular expression (its title)
 PIECES = [
     *"abcmMpPiIqQtTdDxXwWbBeE_019#%$'\"[](){}.,:;=<>+-*/& \t\r\n",
     *["ä", "ß", "K", "ſ", "ı", "\u00a0", "\u2028", "€", "²"],
     *["16#", "2#", "T#", "INT#", "DB", "DBX", "PIW", "END_IF", "NAME", "VAR_TEMP", "REGION", "(*"],
     *["*)", "/*", "*/", "//", "1.5", "e3", "-", " [", " :", " 1.2", ":=", "=>", "..", "**"],
     *["AUTHOR :", "name:", "KNOW_HOW_PROTECT", "read_only", "VAR_INPUT CONSTANT", "REGION x"],
+    *["%X3", "%w1", "#k..", '"K",', "END_REGION t"],
 ]
 
 

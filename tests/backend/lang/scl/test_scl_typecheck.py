@@ -47,7 +47,7 @@ CASES = [
     ("k := zz + 1 + w;", [("SCL201", 5, 8)]),
     # operand types, implicit conversions (class A) in operations
     ("k := w + k;", [("SCL211", 5, 8)]),
-    ("x := w = 23;", [("SCL211", 5, 8)]),
+    ("x := w = -23;", [("SCL211", 5, 8)]),  # 0..65535 compares as a WORD (issue 20, forms)
     ("x := 'A' + 'B';", [("SCL211", 5, 8)]),
     ("x := (k <= 0) + (d > 0);", [("SCL211", 5, 8)]),
     ("d := k + d;", []),
@@ -64,7 +64,8 @@ CASES = [
     ("k := MW10;", [("SCL213", 5, 8)]),
     ("k := Level;", [("SCL213", 5, 8)]),
     ("k := DB1.DW2;", [("SCL213", 5, 8)]),
-    ("k := b;", [("SCL214", 5, 8)]),
+    ("k := b;", [("SCL213", 5, 8)]),  # TIA Portal has BYTE_TO_INT
+    ("k := t;", [("SCL214", 5, 8)]),
     ("x := 2;", [("SCL214", 5, 8)]),
     ("c := 'AB';", [("SCL214", 5, 8)]),
     ("a := rec;", [("SCL214", 5, 8)]),

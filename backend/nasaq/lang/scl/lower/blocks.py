@@ -61,14 +61,18 @@ def lower_block(
         except LoweringError as error:
             where = f"{block.kind.value} {block.number}"
             return None, [problem("SCL301", block.file, error.loc, what=error.what, block=where)]
-    sections = [
-        stl.VarSectionNode(
-            SECTION_KEYWORD[name],
-            [_declaration(index, block, part, node.loc) for part in group],
-            node.loc,
-        )
-        for name, group in block.sections
-    ]
+    try:
+        sections = [
+            stl.VarSectionNode(
+                SECTION_KEYWORD[name],
+                [_declaration(index, block, part, node.loc) for part in group],
+                node.loc,
+            )
+            for name, group in block.sections
+        ]
+    except LoweringError as error:  # an initial value beyond the code generator
+        where = f"{block.kind.value} {block.number}"
+        return None, [problem("SCL301", block.file, error.loc, what=error.what, block=where)]
     taken = set(block.variables) | set(block.constants)
     emitter = Emitter(taken)
     lowerer = Statements(index, block, emitter, ctx)
@@ -144,7 +148,7 @@ def _type_node(data_type: DataType, loc: ast.Loc) -> stl.TypeNode:
     if isinstance(data_type, Elementary):
         return stl.NamedTypeNode(data_type.name, None, loc)
     if isinstance(data_type, StringType):
-        return stl.NamedTypeNode("STRING", data_type.length, loc)
+        return stl.NamedTypeNode(data_type.name, data_type.length, loc)
     if isinstance(data_type, ArrayType):
         return stl.ArrayTypeNode(list(data_type.dims), _type_node(data_type.element, loc), loc)
     if isinstance(data_type, StructType):
@@ -193,6 +197,8 @@ def _init_values(
             found.append(stl.RepeatNode(count, inner, item.loc))
         elif isinstance(item, ast.InitList):
             found += _init_values(index, block, item.values, data_type)
+        elif isinstance(item, ast.InitStruct):  # TIA's (v1, (), v3): STL has no such value
+            raise LoweringError(item.loc, "a structured initial value")
         else:
             value = evaluate(item, index, block)
             if value is None:
@@ -206,7 +212,7 @@ def _scalar_name(data_type: DataType) -> str:
     if isinstance(data_type, Elementary):
         return data_type.name
     if isinstance(data_type, StringType):
-        return "STRING"
+        return data_type.name
     return ""
 
 

@@ -7,6 +7,11 @@ a variable of the formal's type is passed as it is, anything else is computed in
 temporary first (outputs: copied from a temporary after the call when they need a
 conversion). ``EN`` makes the call conditional; ``ENO =>`` receives BR after the call (the
 callee's ENO), FALSE when EN was FALSE.
+
+A structure or array chosen by a variable index (``"Db".keys[i].edge``) is passed through a
+temporary of its type: copied in before the call and, for an in/out, back after it. STEP 7
+passes a pointer to the element itself; the two differ only when the callee also reaches the
+element another way during the call (issue 20, the gaps part).
 """
 
 from __future__ import annotations
@@ -16,11 +21,12 @@ from nasaq.lang.scl import ast
 from nasaq.lang.scl.lower.emitter import Temp
 from nasaq.lang.scl.lower.expressions import Expressions
 from nasaq.lang.scl.lower.literals import stl_constant
-from nasaq.lang.scl.lower.places import LoweringError
-from nasaq.lang.scl.typecheck.rules.calls import STANDARD
+from nasaq.lang.scl.lower.places import Access, LoweringError
+from nasaq.lang.scl.typecheck.iec_calls import instance_of, instruction, pairing
+from nasaq.lang.scl.typecheck.rules.calls import STANDARD, called_by_name
 from nasaq.lang.scl.typecheck.types import BlockRef, DbRef, scalar
 from nasaq.lang.stl import ast as stl
-from nasaq.lang.types import BlockType, DataType, Elementary, StringType
+from nasaq.lang.types import ArrayType, BlockType, DataType, Elementary, StringType, StructType
 
 TIMERS = {"S_PULSE": "SP", "S_PEXT": "SE", "S_ODT": "SD", "S_ODTS": "SS", "S_OFFDT": "SF"}
 COUNTERS = {"S_CU": ("CU",), "S_CD": ("CD",), "S_CUD": ("CU", "CD")}
@@ -81,7 +87,7 @@ class Calls(Expressions):
 
     def standard_name(self, node: ast.Call) -> str | None:
         callee = node.callee
-        if not isinstance(callee, ast.Name) or self.ctx.variable(callee.name) is not None:
+        if not isinstance(callee, ast.Name) or not called_by_name(self.ctx, callee.name):
             return None
         upper = callee.name.upper()
         if upper in STANDARD and self.index.named(callee.name) is None:
@@ -94,15 +100,20 @@ class Calls(Expressions):
         """The STL call target, the formal parameters and the FC's return type."""
         loc = node.loc
         callee = node.callee
+        if isinstance(callee, ast.Member) and instruction(callee) is not None:
+            found = self.iec_target(callee, instruction(callee) or 0)
+            if found is not None:
+                return found
         if isinstance(callee, ast.Member):
             kind = self.type_of(callee.base)
-            if isinstance(kind, BlockRef) and kind.kind is BlockKind.FB:
-                db = self.db_number(callee.name)
+            if isinstance(kind, BlockRef) and kind.kind in (BlockKind.FB, BlockKind.SFB):
+                db = self.db_number(callee.name)  # FB1.DB1(...), SFB4.DB2(IN := TRUE ...)
+                fb = kind.kind.value
                 target: list[stl.OperandNode] = [
-                    stl.AddressNode(f"FB {kind.number}", loc),
+                    stl.AddressNode(f"{fb} {kind.number}", loc),
                     stl.AddressNode(f"DB {db}", loc),
                 ]
-                return target, self.formals(BlockType("FB", kind.number)), None
+                return target, self.formals(BlockType(fb, kind.number)), None
         if isinstance(callee, ast.Name | ast.Local):
             variable = self.ctx.variable(callee.name)
             if variable is not None and isinstance(variable.type, BlockType):
@@ -132,6 +143,32 @@ class Calls(Expressions):
                 known = dict(SYSTEM_FUNCTIONS.values())
                 return [stl.AddressNode(text, loc)], {}, known.get(kind.number)
         raise LoweringError(loc, "this call")
+
+    def iec_target(
+        self, callee: ast.Member, run: int
+    ) -> tuple[list[stl.OperandNode], Formals, DataType | None] | None:
+        """``"IEC_Timer_0_DB".TON(...)``: ``CALL SFB 4, DB n``; ``#inst.TON(...)``: ``CALL
+        #inst`` (``typecheck.iec_calls``); None when the base is no IEC instance."""
+        loc = callee.loc
+        value = self.type_of(callee.base)
+        instance = instance_of(self.index, value)
+        pair = None if instance is None else pairing(instance, run)
+        if pair is None:
+            return None
+        formals = self.formals(BlockType("SFB", pair.run))
+        for name, spelling in pair.renamed.items():
+            formals[name.casefold()] = formals[spelling.casefold()]
+        if isinstance(value, DbRef) and value.number is not None:
+            target: list[stl.OperandNode] = [
+                stl.AddressNode(f"SFB {pair.run}", loc),
+                stl.AddressNode(f"DB {value.number}", loc),
+            ]
+            return target, formals, None
+        base = callee.base
+        variable = self.ctx.variable(base.name) if isinstance(base, ast.Name | ast.Local) else None
+        if variable is None or pair.run != pair.instance.number:
+            raise LoweringError(loc, f"this call of {callee.name.name}")  # type: ignore[union-attr]
+        return [stl.SymbolNode(variable.name, True, [], loc)], formals, None
 
     def db_number(self, node: ast.Expr) -> int:
         if isinstance(node, ast.Address):
@@ -175,6 +212,7 @@ class Calls(Expressions):
         args: list[stl.CallArgNode] = []
         after: list[tuple[Temp, ast.Expr]] = []
         used: list[Temp] = []
+        copies: list[tuple[Temp, Access | None]] = []
         for arg in node.args:
             name = (arg.name or "").upper()
             if name == "EN":
@@ -196,6 +234,14 @@ class Calls(Expressions):
                 operand, temp = self.output_actual(arg.value, data_type)
                 if temp is not None:
                     after.append((temp, arg.value))
+            elif data_type is not None and self.structure_by_variable_index(arg.value, data_type):
+                # A pointer to a computed place cannot be written in a CALL: the element goes
+                # through a temporary, copied in before and (in/out) back after the call.
+                access = self.access(arg.value)
+                copied = em.temp(data_type)
+                self.copy_parts(Access("local", copied.name), access, data_type, arg.loc)
+                operand = em.ref(copied)
+                copies.append((copied, access if section == "IN_OUT" else None))
             elif section == "IN_OUT":
                 operand = self.operand(self.access(arg.value), arg.value.loc)
             else:
@@ -223,6 +269,10 @@ class Calls(Expressions):
         for temp, place in after:
             self.store_from(temp, place)
             em.release(temp)
+        for copied, back in copies:
+            if back is not None:
+                self.copy_parts(back, Access("local", copied.name), copied.type, em.loc)
+            em.release(copied)
         if eno is not None:
             em.op("A", stl.BareNode("BR", None, em.loc))
             em.op("=", self.operand(self.access(eno), eno.loc))
@@ -244,6 +294,8 @@ class Calls(Expressions):
         constant = self.constant(value)
         if constant is not None and (want is not None or formal is None):
             kind, text = stl_constant(constant, want or self.scalar_of(value))
+            if kind == "IDENT":  # TRUE/FALSE: STL reads them as names, as in `a := TRUE`
+                return stl.BareNode(text, None, em.loc), None
             return em.literal(kind, text), None
         if self.passes_as_is(value, formal):
             return self.operand(self.access(value), value.loc), None
@@ -268,6 +320,20 @@ class Calls(Expressions):
             raise LoweringError(value.loc, "this output parameter")
         temp = self.em.temp(formal)
         return self.em.ref(temp), temp
+
+    def structure_by_variable_index(self, value: ast.Expr, formal: DataType) -> bool:
+        """A structured actual parameter (passed as a pointer) whose place depends on a
+        variable index (``"Db".items[i].state``)."""
+        structured = isinstance(formal, StructType | ArrayType)
+        if not (structured or (isinstance(formal, BlockType) and formal.kind == "UDT")):
+            return False
+        if not self.is_variable(value):
+            return False
+        try:
+            access = self.access(value)
+        except LoweringError:
+            return False
+        return access.root in ("local", "db") and self.constant_path(access.path) is None
 
     def passes_as_is(self, value: ast.Expr, formal: DataType | None) -> bool:
         """A variable of the formal's own type, reached without set-up code."""
@@ -368,6 +434,13 @@ class Calls(Expressions):
         self.load_value(node, "WORD")
         self.em.op("T", self.em.ref(temp))
         return stl.IndirectNode(area, self.em.ref(temp), None, node.loc)
+
+    # ---- provided by the statements ---------------------------------------------------------
+
+    def copy_parts(
+        self, target: Access, source: Access, data_type: DataType, loc: ast.Loc
+    ) -> None:  # pragma: no cover
+        raise NotImplementedError
 
     # ---- provided by the standard functions -------------------------------------------------
 

@@ -14,7 +14,7 @@ TIME, TIME_OF_DAY and DATE otherwise compute as DINT (``expressions``).
 
 from __future__ import annotations
 
-from nasaq.lang.iec_library import DT_ARITHMETIC, DT_COMPARE, STRING_COMPARE
+from nasaq.lang.iec_library import DT_ARITHMETIC, DT_COMPARE, STRING_COMPARE, WSTRING_COMPARE
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.lower.expressions import COMPARISONS
 from nasaq.lang.scl.lower.literals import Value, dt_body
@@ -104,6 +104,8 @@ class Dates(Strings):
             return None
         left, right = scalar(self.type_of(node.left)), scalar(self.type_of(node.right))
         if comparison:
+            if left == "WSTRING" or right == "WSTRING":  # ``nasaq.lang.wide_text``
+                return WSTRING_COMPARE[op]
             if left == "STRING" or right == "STRING":
                 return STRING_COMPARE[op]
             if left == "DATE_AND_TIME" or right == "DATE_AND_TIME":

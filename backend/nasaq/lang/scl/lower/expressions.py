@@ -20,6 +20,7 @@ from nasaq.lang.scl import ast
 from nasaq.lang.scl.lower.emitter import Temp
 from nasaq.lang.scl.lower.literals import stl_constant
 from nasaq.lang.scl.lower.places import Base, LoweringError
+from nasaq.lang.scl.lower.slices import bit_result, load_slice
 from nasaq.lang.scl.typecheck.types import scalar, wider
 from nasaq.lang.stl import ast as stl
 from nasaq.lang.types import Elementary
@@ -89,6 +90,8 @@ class Expressions(Base):
             return
         if isinstance(node, ast.Unary):
             self.unary(node, have)
+        elif isinstance(node, ast.Slice):
+            load_slice(self, node)
         elif isinstance(node, ast.Binary):
             self.binary(node, have)
         elif isinstance(node, ast.Call):
@@ -313,6 +316,8 @@ class Expressions(Base):
         em = self.em
         left, right = self.type_of(node.left), self.type_of(node.right)
         kind = wider(scalar(left) or "", scalar(right) or "") or scalar(left) or "INT"
+        if kind == "DINT" and "DWORD" in (scalar(left), scalar(right)):
+            kind = "DWORD"  # `4294967295 = dw`: the constant as the DWORD's bits
         if kind == "BOOL":
             em.op("X(")
             self.logic(node.left, "X")
@@ -329,7 +334,9 @@ class Expressions(Base):
             raise LoweringError(node.loc, "comparing STRINGs")
         else:
             suffix = "D"
-            kind = "DINT" if kind in _DOUBLE or kind in ("BYTE", "WORD", "CHAR") else kind
+            # DWORD stays DWORD: its constants above 2**31 load as DW#16#…, not as L# (STL214)
+            if kind != "DWORD" and (kind in _DOUBLE or kind in ("BYTE", "WORD", "CHAR")):
+                kind = "DINT"
         swapped = self.operands(node, kind if kind != "S5TIME" else "INT")
         op = _SWAPPED[node.op] if swapped else node.op
         em.op(_COMPARE[op] + suffix)
@@ -349,6 +356,8 @@ class Expressions(Base):
         if kind is ast.Call:
             assert isinstance(node, ast.Call)
             self.hoisted[id(node)] = self.call_result(node)
+        elif isinstance(node, ast.Slice) and node.width == "X":  # x.%X3: computed, then
+            self.hoisted[id(node)] = bit_result(self, node)  # read in the logic string
         elif kind is ast.Binary:
             assert isinstance(node, ast.Binary)
             name = self.library_operation(node)
@@ -390,6 +399,8 @@ def _children(node: ast.Expr) -> list[ast.Expr]:
         return [node.base, *node.indices]
     if isinstance(node, ast.Member):
         return [node.base]
+    if isinstance(node, ast.Slice):
+        return [] if node.width == "X" else [node.base]
     if isinstance(node, ast.IndexedAddress):
         return list(node.indices)
     return []

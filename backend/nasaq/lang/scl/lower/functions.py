@@ -1,7 +1,8 @@
 """S7-SCL's built-in functions, compiled in line as S7-SCL does: conversions (``ITD``, ``DTR``,
 ``RND``, ``BTI`` ... or nothing, for the bit-pattern copies such as ``WORD_TO_INT``), the REAL
 functions (``SQRT``, ``LN`` ...; ``LOG`` and ``EXPD`` through ``LN``/``EXP``), ``ABS``, shifts
-and rotations, and the selections ``MAX``, ``MIN``, ``LIMIT``, ``SEL``, ``MUX``.
+and rotations, and the selections ``MAX``, ``MIN`` (any number of inputs), ``LIMIT``,
+``SEL``, ``MUX`` (a K that names no input gives ELSE, or 0 without it, and ENO FALSE).
 
 Rotating a BYTE or WORD uses the doubleword rotation on the value repeated across ACCU1
 (``2#1101_0011`` → 16#D3D3D3D3), so the bits that leave one end come back at the other. Shift
@@ -13,6 +14,7 @@ from __future__ import annotations
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.lower.calls import Calls
 from nasaq.lang.scl.lower.places import LoweringError
+from nasaq.lang.scl.typecheck import instructions
 from nasaq.lang.scl.typecheck.rules.calls import REAL_FUNCTIONS
 from nasaq.lang.types import Elementary
 
@@ -35,6 +37,10 @@ _DIRECT = {
     "INT_TO_BCD_BYTE": ("INT", ["ITB"]),
     "DWORD_BCD_TO_DINT": ("DWORD", ["BTD"]),
     "DINT_TO_BCD_DWORD": ("DINT", ["DTB"]),
+    "BCD16_TO_INT": ("WORD", ["BTI"]),  # TIA's names
+    "INT_TO_BCD16": ("INT", ["ITB"]),
+    "BCD32_TO_DINT": ("DWORD", ["BTD"]),
+    "DINT_TO_BCD32": ("DINT", ["DTB"]),
 }
 _SHIFTS = {
     ("SHL", 16): "SLW",
@@ -84,7 +90,8 @@ class Functions(Calls):
         elif name in ("SHL", "SHR", "ROL", "ROR"):
             self.shift(node, name, result)
         elif name in ("MAX", "MIN"):
-            self.extreme(node, name, result, [arg.value for arg in node.args])
+            values = [arg.value for arg in instructions.arguments(node, name)]
+            self.extreme(node, name, result, values)
         elif name == "LIMIT":
             low, value, high = self.arguments(node, "MN", "IN", "MX")
             self.limit(low, value, high, result)
@@ -121,7 +128,9 @@ class Functions(Calls):
         if source in ("STRING",) or result in ("STRING",):
             raise LoweringError(node.loc, f"the function {name}")
         self.load_value(value, source)
-        if result == "BYTE" or (result == "CHAR" and source != "BYTE"):
+        if (result == "BYTE" or result == "CHAR") and source in ("DINT", "DWORD"):
+            self.em.op("AD", self.em.literal("TYPED", "DW#16#FF"))  # the high word too
+        elif result == "BYTE" or (result == "CHAR" and source != "BYTE"):
             self.em.op("AW", self.em.literal("TYPED", "W#16#FF"))
         elif result == "WORD" and source in ("DWORD", "DINT"):
             self.em.op("AD", self.em.literal("TYPED", "DW#16#FFFF"))
@@ -241,20 +250,37 @@ class Functions(Calls):
             self.load_value(second, result)
             em.place(done)
             return
-        inputs = [arg.value for arg in node.args if (arg.name or "").upper() not in ("K", "")]
+        inputs: dict[int, ast.Expr] = {}
+        otherwise: ast.Expr | None = None
+        for arg in instructions.arguments(node, name):
+            formal = (arg.name or "").upper()
+            if formal == "ELSE":
+                otherwise = arg.value
+            elif arg.name is None:
+                inputs[len(inputs)] = arg.value  # K first, then IN0, IN1 ... in order
+            elif formal[2:].isdigit():
+                inputs[int(formal[2:])] = arg.value
         (key,) = self.arguments(node, "K")
-        temp = em.temp(Elementary("INT"))
-        self.load_value(key, "INT")
+        temp = em.temp(Elementary("DINT"))
+        self.load_value(key, "DINT")
         em.op("T", em.ref(temp))
-        for position, value in enumerate(inputs):
+        for position, value in sorted(inputs.items()):
             following = em.new_label()
             em.op("L", em.ref(temp))
-            em.load_text("NUMBER", str(position))
-            em.op("==I")
+            em.load_text("TYPED", f"L#{position}")
+            em.op("==D")
             em.jump("JCN", following)
             self.load_value(value, result)
             em.jump("JU", done)
             em.place(following)
-        em.load_text("NUMBER", "0")
+        # K names no input: ENO FALSE, the value ELSE (TIA), else 0 (*Nasaq*)
+        status = getattr(self, "eno_status", None)
+        if status is not None:
+            em.op("CLR")
+            em.op("=", em.ref(status))
+        if otherwise is not None:
+            self.load_value(otherwise, result)
+        else:
+            em.load_text("NUMBER", "0")
         em.place(done)
         em.release(temp)

@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import cache
 
+from nasaq.lang.s7_1500_values import ltime_ns
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import SclBlock, SclIndex
 from nasaq.lang.stl.build import unquote_chars
@@ -23,6 +24,10 @@ _INT_PREFIXES = {
     "USINT",
     "UINT",
     "UDINT",
+    "LINT",
+    "ULINT",
+    "LWORD",
+    "LW",
     "BYTE",
     "WORD",
     "DWORD",
@@ -126,8 +131,10 @@ def _parse(kind: str, text: str) -> Value | None:
         return Value("int", ord(chars)) if len(chars) == 1 else None
     if upper in _INT_PREFIXES:
         return _literal("INTEGER" if "#" not in body else "TYPED", body)
-    if upper == "REAL":
+    if upper in ("REAL", "LREAL"):
         return Value("real", float(body.replace("_", "")))
+    if upper in ("LT", "LTIME"):  # in nanoseconds (``nasaq.lang.s7_1500_values``)
+        return Value("int", ltime_ns(body, text))
     if upper == "BOOL":
         inner = body.upper()
         return Value("int", 1 if inner in ("TRUE", "1") else 0)
@@ -135,6 +142,11 @@ def _parse(kind: str, text: str) -> Value | None:
         return Value("int", int(body.replace("_", "")))  # CHAR#49: the character of code 49
     if upper == "CHAR":
         return Value("chars", text=body)
+    if upper == "WSTRING":
+        return Value("chars", text=body)
+    if upper == "WCHAR":  # its UTF-16 code unit
+        units = unquote_chars(body).encode("utf-16-be", errors="surrogatepass")
+        return Value("int", int.from_bytes(units, "big")) if len(units) == 2 else None
     if upper == "C":
         return Value("int", int(body.replace("_", "")))
     if upper in _TIME_PREFIXES:
@@ -154,6 +166,11 @@ def dt_body(text: str) -> str:
 
 def stl_constant(value: Value, want: str) -> tuple[str, str]:
     """``value`` written as an STL constant of type ``want`` (an elementary type name)."""
+    if value.kind == "chars" and want == "WCHAR":  # one UTF-16 code unit
+        text = value.text if value.text.startswith("'") else f"'{value.text}'"
+        units = unquote_chars(text).encode("utf-16-be", errors="surrogatepass")
+        if len(units) == 2:
+            return "TYPED", f"W#16#{int.from_bytes(units, 'big'):04X}"
     if value.kind == "chars":
         return "CHARS", value.text
     if value.kind in _STL_PREFIX:

@@ -27,10 +27,18 @@ from nasaq.lang.scl.lower.literals import Value, evaluate
 from nasaq.lang.scl.typecheck.context import Context
 from nasaq.lang.scl.typecheck.operands import indexed_type
 from nasaq.lang.scl.typecheck.rules import EXPRESSIONS
-from nasaq.lang.scl.typecheck.types import ANYTHING, BlockRef, DbRef, Type, scalar, wider
+from nasaq.lang.scl.typecheck.types import (
+    ANYTHING,
+    BlockRef,
+    DbRef,
+    Special,
+    Type,
+    scalar,
+    wider,
+)
 from nasaq.lang.stl import ast as stl
 from nasaq.lang.stl.diag import problem
-from nasaq.lang.types import ArrayType, DataType, Elementary, Field, StringType
+from nasaq.lang.types import ArrayType, DataType, Elementary, Field, StringType, type_text
 
 _WIDTH_LETTER = {"BOOL": "X", "BYTE": "B", "CHAR": "B", "WORD": "W", "DWORD": "D"}
 _DB_PARTS = {"DX": "DBX", "DB": "DBB", "DW": "DBW", "DD": "DBD", "D": "DBX"}
@@ -133,7 +141,10 @@ class Base:
         data_type = self.type_of(node)
         found = scalar(data_type)
         if found is None:
-            raise LoweringError(node.loc, f"a value of type {data_type!s}")
+            shown = data_type.name if isinstance(data_type, Special) else "a block"
+            if isinstance(data_type, DataType):
+                shown = type_text(data_type)
+            raise LoweringError(node.loc, f"a value of type {shown}")
         return found
 
     def constant(self, node: ast.Expr) -> Value | None:
@@ -234,6 +245,11 @@ class Base:
             return Access("ret")
         symbol = self.index.symbol(name)
         if symbol is None:
+            # No global of that name: a "quoted" local, as the checker reads it (``symbol``
+            # in ``typecheck.rules.undeclared``), or a local constant.
+            variable = self.ctx.variable(name)
+            if variable is not None:
+                return Access("local", variable.name)
             raise LoweringError(node.loc, f'"{name}"')
         if symbol.parsed.kind == "block" and symbol.parsed.block is BlockKind.DB:
             return Access("db", db=symbol.parsed.number)
@@ -487,9 +503,13 @@ class Base:
             array = current.type
             lows: list[int] = []
             variable: list[ast.Expr] = []
+            # With a variable index, the term sums every index of the list (``m[i, 1]``): the
+            # element is then taken at the low bounds, the constant ones included.
+            computed = any(self.constant(item) is None for item in part)
             for item, (low, _high) in zip(part, array.dims, strict=False):
                 value = self.constant(item)
-                lows.append(int(value.number) if value is not None and value.kind == "int" else low)
+                known = value is not None and value.kind == "int" and not computed
+                lows.append(int(value.number) if known and value is not None else low)
                 variable.append(item)
             while len(lows) < len(array.dims):  # a row of a matrix
                 lows.append(array.dims[len(lows)][0])

@@ -16,12 +16,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from nasaq.ir import BlockKind
-from nasaq.lang.iec_library import FUNCTIONS, LibraryFunction
+from nasaq.lang.iec_library import FUNCTIONS, LibraryFunction, wide_variant
 from nasaq.lang.layout import Slot
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.lower.emitter import Temp
 from nasaq.lang.scl.lower.functions import Functions
 from nasaq.lang.scl.lower.places import Access, LoweringError, Selector
+from nasaq.lang.scl.typecheck.rules.calls import called_by_name
 from nasaq.lang.scl.typecheck.types import Type
 from nasaq.lang.stl import ast as stl
 from nasaq.lang.types import DataType, Elementary, Field
@@ -72,7 +73,10 @@ class References(Functions):
             raise LoweringError(loc, "this STRING or DATE_AND_TIME")
         variable = self.ctx.variable(access.name)
         if variable is None:
-            raise LoweringError(loc, access.name)
+            hidden = next((temp for temp in em.temps if temp.name == access.name), None)
+            if hidden is None:
+                raise LoweringError(loc, access.name)
+            return self.in_hidden(hidden, access.path, length, loc)
         path = [access.name, *access.path]
         if variable.section == "TEMP":
             slots, _size = self.index.temp_layout(self.block)
@@ -84,6 +88,21 @@ class References(Functions):
             slots, _size = self.index.instance_layout(self.block)
             return self.pointer_to(slots, path, "DI", None, length, loc)
         return self.through(access, access.name, variable.type, None, loc)  # an FC parameter
+
+    def in_hidden(
+        self, temp: Temp, path: list[Selector], length: int | None, loc: ast.Loc
+    ) -> Place:
+        """A part of a structured hidden temporary (a structure passed through one, see
+        ``calls``): its pointer plus the part's constant offset."""
+        em = self.em
+        slots = self.index.layout.place([Field(temp.name, temp.type)])
+        slot, _terms = self.walk(slots, [temp.name, *path], loc)
+        pointer = em.temp(DWORD)
+        em.op("L", em.literal("POINTER", f"P##{temp.name}"))
+        em.load_text("TYPED", f"L#{slot.offset_bits}")
+        em.op("+D")
+        em.op("T", em.ref(pointer))
+        return Place(pointer, None, length)
 
     def pointer_to(
         self,
@@ -196,12 +215,13 @@ class References(Functions):
     def library_function(self, node: ast.Call) -> LibraryFunction | None:
         """The library FC a call names, unless a variable or block of the program has the name."""
         callee = node.callee
-        if not isinstance(callee, ast.Name) or self.ctx.variable(callee.name) is not None:
+        if not isinstance(callee, ast.Name) or not called_by_name(self.ctx, callee.name):
             return None
         found = FUNCTIONS.get(callee.name.upper())
         if found is None or self.index.named(callee.name) is not None:
             return None
-        return found
+        wide = wide_variant(found.name, [self.type_of(arg.value) for arg in node.args])
+        return FUNCTIONS[wide]  # LEN of a WSTRING: LEN_WSTRING
 
     def standard_name(self, node: ast.Call) -> str | None:
         """Library FCs are called as FCs, not compiled in line."""

@@ -12,18 +12,28 @@ from copy import copy
 
 from nasaq.lang.layout import Slot
 from nasaq.lang.scl import ast
-from nasaq.lang.scl.lower.dates import Dates
 from nasaq.lang.scl.lower.literals import Value, stl_constant
+from nasaq.lang.scl.lower.long_functions import LongFunctions
+from nasaq.lang.scl.lower.longs import is_long
 from nasaq.lang.scl.lower.places import Access, LoweringError, Selector
+from nasaq.lang.scl.lower.slices import assign_slice
 from nasaq.lang.scl.typecheck.types import scalar
-from nasaq.lang.types import ArrayType, BlockType, Elementary, Field, StringType, StructType
+from nasaq.lang.types import (
+    ArrayType,
+    BlockType,
+    DataType,
+    Elementary,
+    Field,
+    StringType,
+    StructType,
+)
 
 _SIMPLE_COPY = ("BOOL",)
 _ZERO = Value("int", 0)
 _ONE = Value("int", 1)
 
 
-class Statements(Dates):
+class Statements(LongFunctions):
     def statements(self, body: list[ast.Stmt]) -> None:
         for stmt in body:
             self.statement(stmt)
@@ -38,11 +48,18 @@ class Statements(Dates):
     # ---- simple statements ------------------------------------------------------------------
 
     def do_assign(self, stmt: ast.Assign) -> None:
+        if stmt.chain:  # a := b := c: b := c, then a := b
+            for step in stmt.steps():
+                self.do_assign(step)
+            return
+        if type(stmt.target) is ast.Slice:
+            assign_slice(self, stmt.target, stmt.value)
+            return
         em = self.em
         target = self.type_of(stmt.target)
         kind = scalar(target)
-        if isinstance(target, StringType) or kind == "DATE_AND_TIME":
-            self.assign_text(stmt)  # ``strings``, ``dates``
+        if isinstance(target, StringType) or kind == "DATE_AND_TIME" or is_long(kind):
+            self.assign_text(stmt)  # ``strings``, ``dates``, ``longs``
             return
         if isinstance(target, StructType | ArrayType | BlockType):
             self.copy(stmt)
@@ -75,32 +92,44 @@ class Statements(Dates):
 
     def copy(self, stmt: ast.Assign) -> None:
         """``a := b`` of a structured type: every elementary part, in layout order."""
-        em = self.em
         target = self.access(stmt.target)
         source = self.access(stmt.value) if self.is_variable(stmt.value) else None
         if source is None:
             raise LoweringError(stmt.loc, "assigning this value to a structure")
-        if self.constant_path(target.path) is None or self.constant_path(source.path) is None:
-            raise LoweringError(stmt.loc, "copying a structure chosen by a variable index")
         data_type = self.type_of(stmt.target)
         if not isinstance(data_type, StructType | ArrayType | BlockType):
             raise LoweringError(stmt.loc, "STRING assignments")
+        self.copy_parts(target, source, data_type, stmt.loc)
+
+    def copy_parts(self, target: Access, source: Access, data_type: DataType, loc: ast.Loc) -> None:
+        """Copies every elementary part of a structured ``source`` to ``target``, in layout
+        order. A variable index (``a[i] := b[j]``) computes each part's address in AR1 just
+        before its use, as an elementary ``a[i].x := b[j].x`` does."""
+        em = self.em
         root = self.index.layout.place([Field("x", data_type)])[0]
         for path, slot in self.leaves(root, []):
             if isinstance(slot.type, StringType) or slot.type == Elementary("DATE_AND_TIME"):
                 parts = (_extend(source, path), slot.type, _extend(target, path), slot.type)
-                self.copy_places(*parts, stmt.loc)  # ``strings``, ``dates``
+                self.copy_places(*parts, loc)  # ``strings``, ``dates``
                 continue
             if not isinstance(slot.type, Elementary):
-                raise LoweringError(stmt.loc, "copying this structure")
-            left = self.operand(_extend(target, path), stmt.loc)
-            right = self.operand(_extend(source, path), stmt.loc)
+                raise LoweringError(loc, "copying this structure")
+            left_access = _extend(target, path)
+            right = self.operand(_extend(source, path), loc)
             if slot.type.name in _SIMPLE_COPY:
-                em.op("A", right)
-                em.op("=", left)
+                em.op("A", right)  # the set-up of ``left`` (L, +D, LAR1, OPN) keeps the RLO
+                em.op("=", self.operand(left_access, loc))
+                continue
+            em.op("L", right)
+            if self.needs_setup(left_access):
+                temp = em.temp(Elementary("DWORD"))
+                em.op("T", em.ref(temp))
+                left = self.operand(left_access, loc)
+                em.op("L", em.ref(temp))
+                em.release(temp)
             else:
-                em.op("L", right)
-                em.op("T", left)
+                left = self.operand(left_access, loc)
+            em.op("T", left)
 
     def leaves(
         self, slot: Slot, path: list[str | list[int]]
@@ -180,9 +209,12 @@ class Statements(Dates):
     def do_case(self, stmt: ast.Case) -> None:
         em = self.em
         kind = scalar(self.type_of(stmt.selector)) or "INT"
-        kind = "DINT" if kind in ("DINT", "DWORD") else "INT"
+        unsigned = kind == "UDINT"  # compared with the top bits flipped (labels too)
+        kind = "DINT" if kind in ("DINT", "DWORD", "SINT", "USINT", "UINT", "UDINT") else "INT"
         suffix = "I" if kind == "INT" else "D"
         self.load_value(stmt.selector, kind)
+        if unsigned:
+            em.op("XOD", em.literal("TYPED", "DW#16#80000000"))
         selector = em.temp(Elementary(kind))
         em.op("T", em.ref(selector))
         targets: list[str] = []
@@ -191,13 +223,13 @@ class Statements(Dates):
             targets.append(label)
             em.loc = branch.loc
             for value in branch.values:
-                low = self.case_value(value.low, kind)
+                low = self.case_value(value.low, kind, unsigned)
                 if value.high is None:
                     em.op("L", em.ref(selector))
                     em.load_text(*low)
                     em.op("==" + suffix)
                 else:
-                    high = self.case_value(value.high, kind)
+                    high = self.case_value(value.high, kind, unsigned)
                     em.op("A(")
                     em.op("L", em.ref(selector))
                     em.load_text(*low)
@@ -221,10 +253,18 @@ class Statements(Dates):
             self.statements(stmt.orelse)
         em.place(done)
 
-    def case_value(self, node: ast.Literal, kind: str) -> tuple[str, str]:
+    def case_value(
+        self,
+        node: ast.Literal | ast.Name | ast.Local | ast.Symbol,
+        kind: str,
+        unsigned: bool = False,
+    ) -> tuple[str, str]:
         value = self.constant(node)
         if value is None:
             raise LoweringError(node.loc, "this CASE label")
+        if unsigned and value.kind == "int":  # a UDINT label, its top bit flipped, as a DINT
+            flipped = (int(value.number) ^ 0x80000000) & 0xFFFFFFFF
+            value = Value("int", flipped - (1 << 32) if flipped >> 31 else flipped)
         return stl_constant(value, kind)
 
     # ---- loops ------------------------------------------------------------------------------
@@ -236,7 +276,7 @@ class Statements(Dates):
 
     def do_for(self, stmt: ast.For) -> None:
         em = self.em
-        kind = self.scalar_of(stmt.variable)
+        kind = self.loop_kind(self.scalar_of(stmt.variable))
         suffix = "I" if kind == "INT" else "D"
         counter = stmt.variable
         top, step_label, leave = em.new_label(), em.new_label(), em.new_label()

@@ -20,6 +20,9 @@ A STRING[n] is n + 2 bytes: the maximum length n, the current length, the charac
 - STRING temporaries (the block's own and the hidden ones) get their maximum length at the start
   of the block and are empty (S7's L stack holds whatever the last block left there).
 - ``STRING_TO_CHAR(s)`` is the first character of s; ``CHAR_TO_STRING(c)`` as ``s := c``.
+- WSTRING (``nasaq.lang.wide_text``) is the same code with 2-byte characters: WORD header
+  fields, W accesses and steps of 16 bits (the ``width`` of a copy); a WCHAR is its one
+  character. Its comparisons and functions call the library's ``EQ_WSTRING``, ``LEN_WSTRING``...
 """
 
 from __future__ import annotations
@@ -40,6 +43,7 @@ from nasaq.lang.stl.build import unquote_chars
 from nasaq.lang.types import ArrayType, DataType, Elementary, StringType
 
 LONGEST = StringType(254)
+_UNIT = {1: "B", 2: "W"}  # a STRING's or WSTRING's characters and header fields
 _WIDTHS = ((4, "D", "DW#16#{:08X}"), (2, "W", "W#16#{:04X}"), (1, "B", "B#16#{:02X}"))
 
 
@@ -60,6 +64,28 @@ def chars_of(value: Value) -> bytes | None:
     if value.kind == "int" and 0 <= int(value.number) <= 255:
         return bytes((int(value.number),))
     return None
+
+
+def wide_chars_of(value: Value) -> bytes | None:
+    """The UTF-16 code units (big-endian) of a WSTRING/WCHAR constant, or of a character code."""
+    if value.kind == "chars":
+        text = value.text if value.text.startswith("'") else f"'{value.text}'"
+        return unquote_chars(text).encode("utf-16-be", errors="surrogatepass")
+    if value.kind == "int" and 0 <= int(value.number) <= 0xFFFF:
+        return int(value.number).to_bytes(2, "big")
+    return None
+
+
+def _width(data_type: Type) -> int:
+    """Bytes a character: 2 in a WSTRING, 1 in a STRING."""
+    return data_type.char_bytes if isinstance(data_type, StringType) else 1
+
+
+def _header(data_type: StringType) -> tuple[int, ...]:
+    """The WORDs a STRING/WSTRING starts with when empty: the maximum length, then 0."""
+    if data_type.wide:
+        return (data_type.length, 0)
+    return (data_type.length << 8,)
 
 
 def chars_literal(chars: bytes) -> str:
@@ -88,15 +114,16 @@ class Strings(References):
         inner = unparen(value)
         hoisted = id(inner) in self.hoisted
         constant = None if hoisted else self.constant(inner)
+        width = _width(target_type)
         if constant is not None:
-            chars = chars_of(constant)
+            chars = chars_of(constant) if width == 1 else wide_chars_of(constant)
             if chars is None:
-                raise LoweringError(loc, "this STRING constant")
+                raise LoweringError(loc, f"this {scalar(target_type)} constant")
             place = self.locate(target, target_type, loc)
-            self.text_constant(chars, place, loc)
+            self.text_constant(chars, place, loc, width)
             self.release_place(place)
             return
-        if not hoisted and scalar(self.type_of(inner)) == "CHAR":
+        if not hoisted and scalar(self.type_of(inner)) == ("CHAR", "WCHAR")[width - 1]:
             self.text_char(inner, target, target_type, loc)
             return
         if isinstance(inner, ast.Call) and not hoisted:
@@ -107,9 +134,10 @@ class Strings(References):
             if self.direct(target):
                 self.user_call(inner, self.operand(target, loc))
                 return
-            temp = em.temp(LONGEST)
+            longest = StringType(254, width == 2)
+            temp = em.temp(longest)
             self.user_call(inner, temp)
-            self.copy_places(Access("temp", temp=temp), LONGEST, target, target_type, loc)
+            self.copy_places(Access("temp", temp=temp), longest, target, target_type, loc)
             em.release(temp)
             return
         if hoisted or self.is_variable(inner):
@@ -123,7 +151,7 @@ class Strings(References):
         origin = self.locate(source, source_type, loc)
         place = self.locate(target, target_type, loc)
         if isinstance(target_type, StringType):
-            self.copy_text(origin, place)
+            self.copy_text(origin, place, target_type.char_bytes)
         else:
             self.copy_dt(origin, place)
         self.release_place(origin)
@@ -137,29 +165,31 @@ class Strings(References):
 
     def call_result(self, node: ast.Call) -> Temp:
         """A STRING function value in a STRING[254] temporary."""
-        if isinstance(self.type_of(node), StringType) and self.standard_name(node) is None:
-            temp = self.em.temp(LONGEST)
+        found = self.type_of(node)
+        if isinstance(found, StringType) and self.standard_name(node) is None:
+            temp = self.em.temp(StringType(254, found.wide))
             self.user_call(node, temp)
             return temp
         return super().call_result(node)
 
     # ---- the copies -------------------------------------------------------------------------
 
-    def text_constant(self, chars: bytes, place: Place, loc: ast.Loc) -> None:
+    def text_constant(self, chars: bytes, place: Place, loc: ast.Loc, width: int = 1) -> None:
+        """``chars`` (``width`` bytes a character) into the STRING or WSTRING at ``place``."""
         em = self.em
         if place.length is None and chars:  # the room is known at run time only
-            temp = em.temp(StringType(len(chars)))
+            temp = em.temp(StringType(len(chars) // width, width == 2))
             staged = self.locate(Access("temp", temp=temp), temp.type, loc)
-            self.text_constant(chars, staged, loc)
-            self.copy_text(staged, place)
+            self.text_constant(chars, staged, loc, width)
+            self.copy_text(staged, place, width)
             self.release_place(staged)
             em.release(temp)
             return
-        count = min(len(chars), place.length or 0)
+        count = min(len(chars) // width, place.length or 0)
         self.reach(place)
-        self.write_bytes(chars[:count], 2)
+        self.write_bytes(chars[: count * width], 2 * width)
         em.load_text("NUMBER", str(count))
-        em.op("T", self.at("B", 1))
+        em.op("T", self.at(_UNIT[width], width))
 
     def write_bytes(self, data: bytes, start: int) -> None:
         """``data`` to ``B [AR1, P#start.0]`` on, four bytes at a time."""
@@ -176,8 +206,10 @@ class Strings(References):
 
     def text_char(self, value: ast.Expr, target: Access, target_type: Type, loc: ast.Loc) -> None:
         em = self.em
-        char = em.temp(Elementary("BYTE"))
-        self.load_value(value, "CHAR")
+        width = _width(target_type)
+        unit = _UNIT[width]
+        char = em.temp(Elementary(("BYTE", "WORD")[width - 1]))
+        self.load_value(value, ("CHAR", "WCHAR")[width - 1])
         em.op("T", em.ref(char))
         place = self.locate(target, target_type, loc)
         self.reach(place)
@@ -185,39 +217,41 @@ class Strings(References):
             em.load_text("NUMBER", "0")
         elif place.length is not None:
             em.op("L", em.ref(char))
-            em.op("T", self.at("B", 2))
+            em.op("T", self.at(unit, 2 * width))
             em.load_text("NUMBER", "1")
         else:
             empty, done = em.new_label(), em.new_label()
-            em.op("L", self.at("B", 0))
+            em.op("L", self.at(unit, 0))
             em.load_text("NUMBER", "0")
             em.op("==I")
             em.jump("JC", empty)
             em.op("L", em.ref(char))
-            em.op("T", self.at("B", 2))
+            em.op("T", self.at(unit, 2 * width))
             em.load_text("NUMBER", "1")
             em.jump("JU", done)
             em.place(empty)
             em.load_text("NUMBER", "0")
             em.place(done)
-        em.op("T", self.at("B", 1))
+        em.op("T", self.at(unit, width))
         em.release(char)
         self.release_place(place)
 
-    def copy_text(self, source: Place, target: Place) -> None:
-        """target := source: ``min(current length, room)`` characters and the new length. The
-        pointers move on with the characters (the places are used up)."""
+    def copy_text(self, source: Place, target: Place, width: int = 1) -> None:
+        """target := source: ``min(current length, room)`` characters (``width`` bytes each)
+        and the new length. The pointers move on with the characters (the places are used
+        up)."""
         em = self.em
+        unit = _UNIT[width]
         count = em.temp(Elementary("INT"))
         keep, top, done = em.new_label(), em.new_label(), em.new_label()
         if target.length is not None:
             em.load_text("NUMBER", str(target.length))
         else:
             self.reach(target)
-            em.op("L", self.at("B", 0))
+            em.op("L", self.at(unit, 0))
         em.op("T", em.ref(count))
         self.reach(source)
-        em.op("L", self.at("B", 1))
+        em.op("L", self.at(unit, width))
         em.op("L", em.ref(count))
         em.op(">=I")  # the source's length >= the room: the room it is
         em.jump("JC", keep)
@@ -226,7 +260,7 @@ class Strings(References):
         em.place(keep)
         self.reach(target)
         em.op("L", em.ref(count))
-        em.op("T", self.at("B", 1))
+        em.op("T", self.at(unit, width))
         # two different DBs are opened in turn; otherwise the one DB stays open
         both = source.db is not None and target.db is not None
         switch = both and not (isinstance(source.db, int) and source.db == target.db)
@@ -236,13 +270,13 @@ class Strings(References):
         em.op("<=I")
         em.jump("JC", done)
         self.reach(source, open_db=switch)
-        em.op("L", self.at("B", 2))
+        em.op("L", self.at(unit, 2 * width))
         self.reach(target, open_db=switch)
         em.op("TAK")
-        em.op("T", self.at("B", 2))
+        em.op("T", self.at(unit, 2 * width))
         for place in (source, target):
             em.op("L", em.ref(place.pointer))
-            em.load_text("TYPED", "L#8")
+            em.load_text("TYPED", f"L#{8 * width}")
             em.op("+D")
             em.op("T", em.ref(place.pointer))
         em.op("L", em.ref(count))
@@ -278,7 +312,8 @@ class Strings(References):
         if id(inner) in self.hoisted:
             return em.ref(self.hoisted[id(inner)]), None
         constant = self.constant(inner)
-        if constant is not None:
+        wide = isinstance(formal, StringType) and formal.wide  # no STL literal: a temporary
+        if constant is not None and not wide:
             return self.reference_constant(constant, formal, inner.loc), None
         is_text = isinstance(formal, StringType)
         if self.is_variable(inner):
@@ -358,24 +393,26 @@ class Strings(References):
         code, em.code = em.code, []
         em.loc = self.block.node.loc
         slots, _size = self.index.temp_layout(self.block)
-        for offset, length in self.strings_in(slots):
-            em.load_text("TYPED", f"W#16#{length:02X}00")
-            em.op("T", em.address(f"LW {offset}"))
+        for offset, text in self.strings_in(slots):
+            for word, value in enumerate(_header(text)):
+                em.load_text("TYPED", f"W#16#{value:04X}")
+                em.op("T", em.address(f"LW {offset + 2 * word}"))
         for temp in em.temps:
             if isinstance(temp.type, StringType):
                 em.op("L", em.literal("POINTER", f"P##{temp.name}"))
                 em.op("LAR1")
-                em.load_text("TYPED", f"W#16#{temp.type.length:02X}00")
-                em.op("T", self.at("W", 0))
+                for word, value in enumerate(_header(temp.type)):
+                    em.load_text("TYPED", f"W#16#{value:04X}")
+                    em.op("T", self.at("W", 2 * word))
         em.code += code
 
-    def strings_in(self, slots: list[Slot]) -> list[tuple[int, int]]:
-        """(byte, maximum length) of every STRING in ``slots``, array elements included."""
-        found: list[tuple[int, int]] = []
+    def strings_in(self, slots: list[Slot]) -> list[tuple[int, StringType]]:
+        """(byte, type) of every STRING and WSTRING in ``slots``, array elements included."""
+        found: list[tuple[int, StringType]] = []
         for slot in slots:
             data_type = slot.type
             if isinstance(data_type, StringType):
-                found.append((slot.offset_bits // 8, data_type.length))
+                found.append((slot.offset_bits // 8, data_type))
             elif isinstance(data_type, ArrayType) and not isinstance(data_type.element, Elementary):
                 first = self.index.layout.element(slot, [low for low, _high in data_type.dims])
                 if first is None or not self.strings_in([first]):

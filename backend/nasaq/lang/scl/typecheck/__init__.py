@@ -18,6 +18,7 @@ from typing import get_args
 
 from nasaq.diagnostics import Diagnostic
 from nasaq.ir import BlockKind
+from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import SclBlock, SclIndex
 from nasaq.lang.scl.typecheck.context import Context
@@ -72,12 +73,26 @@ _RULES: dict[type, list[StatementRule]] = {
 
 def _statements(ctx: Context, body: list[ast.Stmt]) -> None:
     for stmt in body:
+        if type(stmt) is ast.Assign and (stmt.chain or stmt.op):  # a := b := c, a += b
+            _multiple_assignment(ctx, stmt)
+            continue
         for rule in _RULES.get(type(stmt), ()):
             rule(ctx, stmt)
         for expression in expressions(stmt):
             ctx.type_of(expression)
         for nested in bodies(stmt):
             _statements(ctx, nested)
+
+
+def _multiple_assignment(ctx: Context, stmt: ast.Assign) -> None:
+    """TIA's ``a := b := c`` and ``a += b`` (S7-1200/1500 only): checked as the assignments
+    they stand for."""
+    profile = ctx.index.profile
+    if not is_s7_1500(profile):
+        what = f"{stmt.op}=" if stmt.op else "a multiple assignment"
+        ctx.report("SCL500", stmt.loc, what=what, profile=profile)
+    plain = [ast.Assign(stmt.target, stmt.value, loc=stmt.loc)] if stmt.op else stmt.steps()
+    _statements(ctx, list[ast.Stmt](plain))
 
 
 __all__ = ["check_block", "check_index", "checked_block"]

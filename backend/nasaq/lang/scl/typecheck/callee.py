@@ -17,13 +17,16 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nasaq.ir import BlockKind
+from nasaq.lang.iec_library import wide_variant
+from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.scl import ast
-from nasaq.lang.scl.typecheck import library
+from nasaq.lang.scl.typecheck import iec_calls, instructions, library
 from nasaq.lang.scl.typecheck.instances import INSTANCE_KINDS, block_id, exists
-from nasaq.lang.scl.typecheck.rules.calls import STANDARD
+from nasaq.lang.scl.typecheck.rules.calls import STANDARD, called_by_name
 from nasaq.lang.scl.typecheck.signatures import S5_FUNCTIONS, Signature, of_block, of_instance
 from nasaq.lang.scl.typecheck.types import BlockRef, DbRef, Type, describe, is_silent
 from nasaq.lang.types import BlockType
+from nasaq.lang.wide_text import unsimulated_conversion
 
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
@@ -33,13 +36,29 @@ def resolve(ctx: Context, node: ast.Call) -> Signature | None:
     """The signature to check the call against; None when there is none (reported or unknown)."""
     callee = node.callee
     if isinstance(callee, ast.Member):
+        run = iec_calls.instruction(callee)
+        if run is not None and ctx.variable(_text(callee.base)) is None:
+            named = block_id(ctx.index, ctx.block, callee.base)
+            if named is None or named[0] is BlockKind.DB:  # "IEC_Timer_0_DB".TON(...)
+                return iec_calls.resolve(ctx, callee, run)
+        elif run is not None:  # #inst.TON(...)
+            return iec_calls.resolve(ctx, callee, run)
         base = block_id(ctx.index, ctx.block, callee.base)
         if base is not None:
             return _with_instance(ctx, base, callee)
-    if isinstance(callee, ast.Name) and ctx.variable(callee.name) is None:
+    if isinstance(callee, ast.Name) and called_by_name(ctx, callee.name):
         upper = callee.name.upper()
+        if unsimulated_conversion(upper) and ctx.index.named(callee.name) is None:
+            return None  # SCL800 (``rules.calls``)
         if upper in STANDARD and ctx.index.named(callee.name) is None:
-            return S5_FUNCTIONS.get(upper) or library.signature(upper)
+            values = [ctx.type_of(arg.value) for arg in node.args]
+            wide = wide_variant(upper, values)  # LEN of a WSTRING: LEN_WSTRING
+            if upper == "CONCAT" and is_s7_1500(ctx.index.profile) and wide == upper:
+                return instructions.concat_many()  # TIA: IN1 .. INn
+            if wide != upper and len(node.args) > 2 and upper == "CONCAT":
+                return None  # SCL800 (``rules.calls``)
+            found = S5_FUNCTIONS.get(upper) or library.signature(wide)
+            return found or instructions.signature(upper)
     if not isinstance(callee, ast.Local) and ctx.variable(_text(callee)) is None:
         named = block_id(ctx.index, ctx.block, callee)
         if named is not None and named[0] is not BlockKind.DB:

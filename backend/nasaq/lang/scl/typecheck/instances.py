@@ -3,8 +3,9 @@
 S7-SCL creates the instance DB of ``FB1.DB5(...)`` when it compiles the call (seeds-003b §2.11),
 and a symbol table may give a DB the type of an FB (``ACQUIRE_DATA,DB 10,FB 10``). Before the
 code is checked, these DBs are entered in ``SclIndex.implicit_dbs`` with their FB, so that
-``DB5.out`` has the FB's interface types. The first call names the FB of a DB; a later call
-with another FB is the call rule's error (``SCL233``)."""
+``DB5.out`` has the FB's interface types; so is TIA's ``DB99.TON(...)`` of a DB no source
+declares (an instance of the SFB named after the dot). The first call names the FB of a DB; a
+later call with another FB is the call rule's error (``SCL233``)."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ import re
 
 from nasaq.ir import BlockKind
 from nasaq.lang.scl import ast
-from nasaq.lang.scl.bind import SclBlock, SclIndex
+from nasaq.lang.scl.bind import IEC_INSTANCES, SclBlock, SclIndex
 from nasaq.lang.scl.typecheck.walk import Outline
 from nasaq.lang.stl.addresses import AddressError, parse_address
 from nasaq.lang.system_blocks import SFB_INTERFACES
@@ -69,6 +70,10 @@ def note_implicit_instances(index: SclIndex, outlines: list[tuple[SclBlock, Outl
                 continue
             fb = block_id(index, block, callee.base)
             db = block_id(index, block, callee.name)
+            part = callee.name
+            run = IEC_INSTANCES.get(part.name.upper()) if isinstance(part, ast.Name) else None
+            if run is not None and fb is not None and fb[0] is BlockKind.DB:
+                fb, db = (BlockKind.SFB, run), fb  # TIA's DB99.TON(...): an instance of TON
             if fb is None or db is None or fb[0] not in INSTANCE_KINDS or db[0] != BlockKind.DB:
                 continue
             if index.get(BlockKind.DB, db[1]) is None and exists(index, *fb):

@@ -63,7 +63,7 @@ def indexed_type(area: str) -> tuple[Type, int]:
     last = upper[-1]
     if (last in "WD" and len(upper) > 1) or upper in ("DW", "DD"):
         return Elementary("WORD" if last == "W" else "DWORD"), 1
-    if last == "B" and upper not in ("DB",) and len(upper) > 1:
+    if last == "B" and len(upper) > 1:  # MB[i], DB10.DBB[i], DB10.DB[i] (a byte)
         return Elementary("BYTE"), 1
     return Elementary("BOOL"), 2
 

@@ -18,7 +18,9 @@ from functools import cache, lru_cache
 from typing import Any
 
 from nasaq.ir import BlockKind
+from nasaq.lang import s7_1500_types as s7_1500
 from nasaq.lang.types import ArrayType, BlockType, DataType, Elementary, StringType, type_text
+from nasaq.lang.wide_text import WCHAR_CONVERSIONS
 
 
 @dataclass(frozen=True, slots=True)
@@ -39,9 +41,19 @@ class IntConst:
 
 @dataclass(frozen=True, slots=True)
 class BitsConst:
-    """``16#FF``, ``2#0101``, ``8#17``: the smallest bit string that holds it, or an integer."""
+    """``16#FF``, ``2#0101``, ``8#17``: an integer constant written in another base (S7-SCL
+    manual §9.1.3): in arithmetic and next to integers an INT (DINT when it does not fit), next
+    to a bit string or in a logic operation the smallest bit string that holds it; assigned,
+    any bit string or integer it fits (``integer_of``)."""
 
     value: int
+
+
+def integer_of(value: BitsConst) -> str | None:
+    """The integer type a based constant is in arithmetic: INT, else DINT; None beyond DINT."""
+    if value.value <= RANGES["INT"][1]:
+        return "INT"
+    return "DINT" if value.value <= RANGES["DINT"][1] else None
 
 
 @dataclass(frozen=True, slots=True)
@@ -81,9 +93,28 @@ NUMBERS = ("INT", "DINT", "REAL")
 INTEGERS = ("INT", "DINT")
 TEXT = ("CHAR", "STRING")
 RANGES = {"INT": (-(2**15), 2**15 - 1), "DINT": (-(2**31), 2**31 - 1)}
+RANGES |= {name: s7_1500.INTEGER_RANGES[name] for name in s7_1500.NEW_INTEGERS}  # SINT ... ULINT
 BIT_LIMITS = {"BOOL": 1, "BYTE": 0xFF, "WORD": 0xFFFF, "DWORD": 0xFFFFFFFF}
+BIT_LIMITS["LWORD"] = s7_1500.LWORD_LIMIT
 SHORT = {"TIME_OF_DAY": "TOD", "DATE_AND_TIME": "DT"}
 
+# TIA Portal's conversions between BOOL, BYTE, WORD, DWORD, INT, DINT and CHAR that S7-SCL
+# Classic lacks: integers from and to bit strings of another width (zero-filled from a bit
+# string, the low bits kept into a narrower one, an INT sign-extended into a DWORD), BOOL as 0/1.
+TIA_CONVERSIONS = (
+    "BOOL_TO_INT",
+    "BOOL_TO_DINT",
+    "BYTE_TO_INT",
+    "BYTE_TO_DINT",
+    "WORD_TO_DINT",
+    "DWORD_TO_INT",
+    "INT_TO_BYTE",
+    "INT_TO_DWORD",
+    "DINT_TO_BYTE",
+    "DINT_TO_WORD",
+    "CHAR_TO_DINT",
+    "DINT_TO_CHAR",
+)
 # The explicit conversion functions of S7-SCL (class A and class B, seeds-003b §2.15).
 CONVERSIONS = frozenset(
     [
@@ -125,6 +156,11 @@ CONVERSIONS = frozenset(
         "WORD_TO_INT",
         "WORD_TO_BLOCK_DB",
         "BLOCK_DB_TO_WORD",
+        # TIA Portal's further conversions in this family (every CPU family; the conversions
+        # of the S7-1200/1500 types are the profile's, ``nasaq.lang.profiles``)
+        *TIA_CONVERSIONS,
+        *s7_1500.CONVERSIONS,  # those of the S7-1200/1500 types
+        *WCHAR_CONVERSIONS,  # WCHAR's code unit (``nasaq.lang.wide_text``)
     ]
 )
 # Long type names the function names abbreviate.
@@ -141,7 +177,7 @@ def scalar(value: Type) -> str | None:
     if isinstance(value, Elementary):
         return value.name
     if isinstance(value, StringType):
-        return "STRING"
+        return value.name
     if isinstance(value, IntConst):
         low, high = RANGES["INT"]
         return "INT" if low <= value.value <= high else "DINT"
@@ -160,7 +196,7 @@ def scalar(value: Type) -> str | None:
 def describe(value: Type) -> str:
     """How a message names the type of a value."""
     name = scalar(value)
-    if name == "STRING" and isinstance(value, StringType):
+    if isinstance(value, StringType):
         return type_text(value)
     if name is not None:
         return name
@@ -182,7 +218,7 @@ def widens(source: str, target: str) -> bool:
     for family in (BITS, NUMBERS):
         if source in family and target in family:
             return family.index(source) < family.index(target)
-    return source == "CHAR" and target == "STRING"
+    return (source == "CHAR" and target == "STRING") or s7_1500.widens(source, target)
 
 
 @cache  # a few dozen name pairs, asked for every operation
@@ -192,7 +228,7 @@ def wider(left: str, right: str) -> str | None:
         return right
     if widens(right, left):
         return left
-    return None
+    return s7_1500.common(left, right)  # INT with UINT: DINT (S7-1200/1500 types only)
 
 
 def function_name(source: str, target: str) -> str | None:
@@ -246,8 +282,8 @@ def _assignable(value: Type, target: DataType) -> Verdict:
         if found is not None:
             return found
     if isinstance(value, BitsConst):
-        if (goal in BIT_LIMITS and goal != "BOOL") or goal in INTEGERS:
-            limit = BIT_LIMITS.get(goal, 0xFFFF if goal == "INT" else 0xFFFFFFFF)
+        if (goal in BIT_LIMITS and goal != "BOOL") or goal in RANGES:
+            limit = BIT_LIMITS.get(goal) or _BITS_INTO.get(goal) or RANGES[goal][1]
             if value.value <= limit:
                 return OK
             return Verdict("SCL218", {"text": f"16#{value.value:X}", "type": goal, "hint": ""})
@@ -257,6 +293,12 @@ def _assignable(value: Type, target: DataType) -> Verdict:
         if 0 <= value.ms <= 9_990_000:
             return OK
         return Verdict("SCL218", {"text": f"{value.ms} ms", "type": "S5TIME", "hint": ""})
+    if isinstance(value, CharsConst) and goal in ("WSTRING", "WCHAR"):  # 'abc' as TIA takes it
+        if goal == "WCHAR" and value.length != 1:
+            return Verdict("SCL214", {"actual": "STRING", "expected": "WCHAR"})
+        return OK
+    if goal == "WSTRING" and scalar(value) == "WCHAR":  # one character
+        return OK
     if isinstance(value, CharsConst) and goal == "CHAR" and value.length != 1:
         return Verdict("SCL214", {"actual": "STRING", "expected": "CHAR"})
     source = scalar(value)
@@ -270,14 +312,22 @@ def _assignable(value: Type, target: DataType) -> Verdict:
     return Verdict("SCL214", {"actual": source, "expected": goal})
 
 
+# A bit-string constant into a signed integer: its bit pattern (16#FFFF into an INT is -1).
+_BITS_INTO = {"INT": 0xFFFF, "DINT": 0xFFFFFFFF, "SINT": 0xFF, "LINT": 2**64 - 1}
+
+
 def _int_constant(value: int, goal: str) -> Verdict | None:
     if goal in RANGES:
         low, high = RANGES[goal]
         if low <= value <= high:
             return OK
         return Verdict("SCL218", {"text": str(value), "type": goal, "hint": ""})
-    if goal == "REAL":
+    if goal in s7_1500.FLOATS:
         return OK
     if goal == "BOOL" and value in (0, 1):
         return OK  # `Q0.0 := 1;` (seeds-003b §2.6)
+    if goal in BIT_LIMITS and goal != "BOOL":  # `w := 255;`: STEP 7 takes its bit pattern
+        if 0 <= value <= BIT_LIMITS[goal]:
+            return OK
+        return Verdict("SCL218", {"text": str(value), "type": goal, "hint": ""})
     return None

@@ -29,7 +29,7 @@ def _branch_bodies(stmt: ast.If | ast.Case) -> list[list[ast.Stmt]]:
 
 
 _EXPRESSIONS: dict[type, _Parts] = {
-    ast.Assign: lambda stmt: [stmt.target, stmt.value],
+    ast.Assign: lambda stmt: [stmt.target, *stmt.chain, stmt.value],
     ast.CallStmt: lambda stmt: [stmt.call],
     ast.If: lambda stmt: [branch.condition for branch in stmt.branches],
     ast.Case: lambda stmt: [stmt.selector],
@@ -109,6 +109,11 @@ def _member(node: ast.Member, found: list[ast.Expr]) -> None:
     _add(node.name, found)
 
 
+def _slice(node: ast.Slice, found: list[ast.Expr]) -> None:
+    found.append(node)
+    _add(node.base, found)
+
+
 def _index(node: ast.Index, found: list[ast.Expr]) -> None:
     found.append(node)
     _add(node.base, found)
@@ -134,6 +139,7 @@ _ADD: dict[type, Callable[[Any, list[ast.Expr]], None]] = {
     ast.Binary: _binary,
     ast.Paren: _paren,
     ast.Member: _member,
+    ast.Slice: _slice,
     ast.Index: _index,
     ast.IndexedAddress: _indexed_address,
     ast.Call: _call,

@@ -9,12 +9,13 @@ code at once). ``EXPRESSIONS``, ``STATEMENTS`` and ``BLOCKS`` are what the check
 | ``undeclared`` | SCL201 | names, ``#locals``, ``"symbols"`` must be declared |
 | ``literals`` | SCL218, SCL219 | typed constants: valid, and in range |
 | ``members`` | SCL222 | ``a.b``: the member exists |
+| ``slices`` | SCL500, SCL701, SCL702 | TIA's ``x.%X3``/``%B``/``%W``/``%D`` |
 | ``indexing`` | SCL216, SCL217, SCL249 | number of indices, arrays only, constant indices |
 | ``operators`` | SCL211, SCL212 | operand types, implicit conversions |
 | ``calls`` | — | result types of standard functions and FCs |
 | ``call_parameters`` | SCL223–SCL234, SCL247, SCL251 | callee, actual parameters, FB calls |
 | ``assignment`` | SCL213, SCL214, SCL218 | assignment compatibility |
-| ``assign_input`` | SCL215 | no assignment to an input parameter |
+| ``assign_input`` | SCL215 (warning) | an assignment to an input parameter |
 | ``conditions`` | SCL220 | IF/ELSIF/WHILE/REPEAT conditions are BOOL |
 | ``for_variable`` | SCL221 | FOR variable INT/DINT, bounds assignable to it |
 | ``case_labels`` | SCL235, SCL236, SCL248 | CASE selector INT, labels once, ranges upwards |
@@ -53,6 +54,7 @@ from nasaq.lang.scl.typecheck.rules import (
     operators,
     return_value,
     sign_after_operator,
+    slices,
     temp_instances,
     undeclared,
 )
@@ -70,6 +72,7 @@ EXPRESSIONS: dict[type, ExpressionRule] = {
     ast.Unary: operators.unary,
     ast.Binary: operators.binary,
     ast.Paren: operators.paren,
+    ast.Slice: slices.slice_access,
 }
 
 StatementRule = Callable[[Context, ast.Stmt], None]

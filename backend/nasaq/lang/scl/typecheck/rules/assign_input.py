@@ -1,5 +1,8 @@
-"""Rule: an input parameter (VAR_INPUT) is read-only in the block (``SCL215``), also when a
-member or element of it is the target (``in.x := 1``, ``in[2] := 0``)."""
+"""Rule: a write to an input parameter (VAR_INPUT) is a **warning** (``SCL215``), also when a
+member or element of it is the target (``in.x := 1``, ``in[2] := 0``). STEP 7 (Classic and
+TIA) compiles it with a warning and the code runs: in an FC the write goes through the
+parameter's pointer to the caller's actual (a constant actual is the caller's temporary copy),
+in an FB it changes the instance until the next call passes the input again."""
 
 from __future__ import annotations
 

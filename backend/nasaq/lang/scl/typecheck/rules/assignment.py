@@ -8,6 +8,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nasaq.lang.scl import ast
+from nasaq.lang.scl.typecheck import time_dint
 from nasaq.lang.scl.typecheck.types import assignable, is_silent
 from nasaq.lang.types import ArrayType, BlockType, Elementary, StringType, StructType
 
@@ -29,5 +30,5 @@ def store(ctx: Context, target: ast.Expr, value: ast.Expr) -> None:
     if is_silent(goal) or is_silent(found) or not isinstance(goal, TARGET_TYPES):
         return
     verdict = assignable(found, goal)
-    if verdict.code is not None:
+    if verdict.code is not None and not time_dint.implicit(ctx, found, goal):
         ctx.report(verdict.code, value.loc, **verdict.params)

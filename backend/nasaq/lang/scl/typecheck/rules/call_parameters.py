@@ -9,7 +9,7 @@ checked against the callee's formal parameters (``signatures``; the callee is fo
   ``218``, as assignments); an output is assigned to its actual parameter; an in/out needs an
   actual of the same type (``SCL225``);
 - outputs and in/outs need a variable that can be written (``SCL226``; an input parameter of
-  the calling block is ``SCL215``);
+  the calling block is the warning ``SCL215``, as an assignment to it);
 - an FC needs all of its parameters, an FB its in/outs passed by reference (``SCL227``);
 - a value without a name only for an FC with exactly one input, alone (``SQRT(x)`` and the
   other standard functions are not checked here), otherwise ``SCL229``;
@@ -28,9 +28,9 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nasaq.lang.scl import ast
-from nasaq.lang.scl.typecheck import callee
+from nasaq.lang.scl.typecheck import callee, time_dint
 from nasaq.lang.scl.typecheck.rules import calls
-from nasaq.lang.scl.typecheck.signatures import Param, Signature
+from nasaq.lang.scl.typecheck.signatures import S5_FUNCTIONS, Param, Signature
 from nasaq.lang.scl.typecheck.types import (
     OK,
     BlockRef,
@@ -61,7 +61,8 @@ COMPOUND = (ArrayType, StructType, BlockType)
 DATA_TYPES = (Elementary, StringType, *COMPOUND)
 BLOCK_PARAMETERS = {"BLOCK_FC": "FC", "BLOCK_FB": "FB", "BLOCK_SDB": "SDB"}
 BCD_LIMIT = 999  # three BCD digits, the range of an S5 counter
-INSTANCES = ("FB", "SFB")  # blocks called with an instance: they return no value
+INSTANCES = ("FB", "SFB")
+_S5_NUMBER = Elementary("INT")  # blocks called with an instance: they return no value
 
 
 def call(ctx: Context, node: ast.Call) -> Type:
@@ -96,13 +97,20 @@ def _check(ctx: Context, node: ast.Call, signature: Signature) -> None:
     positional = [arg for arg in node.args if arg.name is None]
     inputs = signature.inputs()
     single = signature.kind == "FC" and len(node.args) == 1 and len(inputs) == 1
-    if positional and not single:
+    ordered = signature.kind == "STANDARD"  # built-ins take unnamed parameters in their order
+    if ordered:  # inputs, then outputs (TIA: ``RD_SYS_T(#now)``)
+        inputs = [p for p in signature.params.values() if p.name not in ("EN", "ENO")]
+    if positional and not single and not (ordered and len(positional) <= len(inputs)):
         ctx.report("SCL229", positional[0].loc, block=signature.label)
         return
     supplied: set[str] = set()
     misnamed = False
     for arg in node.args:
-        param = inputs[0] if arg.name is None else signature.params.get(arg.name.casefold())
+        if arg.name is None:
+            order = next(n for n, other in enumerate(positional) if other is arg)
+            param: Param | None = inputs[order] if ordered else inputs[0]
+        else:
+            param = signature.params.get(arg.name.casefold())
         if param is None:
             ctx.report("SCL223", arg.loc, block=signature.label, name=arg.name)
             misnamed = True
@@ -130,8 +138,10 @@ def _argument(ctx: Context, signature: Signature, param: Param, arg: ast.Arg) ->
             word = f"W#16#{value.value:04X}"
             ctx.report("SCL247", arg.value.loc, value=value.value, name=param.name, word=word)
             return
+        if isinstance(value, IntConst) and signature.label in S5_FUNCTIONS:
+            value = _S5_NUMBER  # TV/PV are BCD words: a decimal number is no bit pattern there
         verdict = _passes(value, param.types)
-        if verdict.code is not None:
+        if verdict.code is not None and not time_dint.implicit(ctx, value, param.types[0]):
             ctx.report(verdict.code, arg.value.loc, **verdict.params)
         return
     ctx.written_actuals.add(id(arg.value))
@@ -141,6 +151,8 @@ def _argument(ctx: Context, signature: Signature, param: Param, arg: ast.Arg) ->
     if is_silent(formal):
         return
     if param.section == "OUT":
+        if isinstance(formal, Elementary) and formal.name == "ANY":
+            return  # MOVE_BLK's OUT: the instruction's own rule checks it (``calls``)
         verdict = _fits(formal, value) if isinstance(value, DATA_TYPES) else OK
         if verdict.code == "SCL213":  # no conversion can be written around an output
             verdict = Verdict("SCL214", {"actual": describe(formal), "expected": describe(value)})
@@ -182,9 +194,10 @@ def _fits(value: Type, formal: DataType) -> Verdict:
 
 
 def _same(formal: DataType, value: Type) -> bool:
-    """An in/out takes a variable of its own type (any STRING for a STRING)."""
+    """An in/out takes a variable of its own type (any STRING for a STRING, any WSTRING for a
+    WSTRING)."""
     if isinstance(formal, StringType):
-        return isinstance(value, StringType)
+        return isinstance(value, StringType) and value.wide == formal.wide
     if isinstance(formal, Elementary) and formal.name in ("ANY", "POINTER"):
         return True
     if isinstance(formal, COMPOUND):
@@ -205,8 +218,7 @@ def _writable(
             ctx.index.named(root.name) is not None or ctx.index.symbol(root.name) is not None
         )
         if variable is not None and variable.section == "IN" and not is_global:
-            ctx.report("SCL215", root.loc, name=variable.name, block=ctx.block.label)
-            return False
+            ctx.report("SCL215", root.loc, name=variable.name, block=ctx.block.label)  # warning
     timer = isinstance(value, Elementary) and value.name in ("TIMER", "COUNTER")
     if isinstance(actual, VALUES) or timer or not _is_variable(value):
         ctx.report(

@@ -7,8 +7,10 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nasaq.ir import BlockKind
+from nasaq.lang.iec_library import WIDE_FUNCTIONS, wide_variant
+from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.scl import ast
-from nasaq.lang.scl.typecheck import library
+from nasaq.lang.scl.typecheck import instructions, library
 from nasaq.lang.scl.typecheck.operands import function_value
 from nasaq.lang.scl.typecheck.signatures import S5_FUNCTIONS
 from nasaq.lang.scl.typecheck.types import (
@@ -21,7 +23,8 @@ from nasaq.lang.scl.typecheck.types import (
     Type,
     scalar,
 )
-from nasaq.lang.types import Elementary, StringType
+from nasaq.lang.types import BlockType, Elementary, StringType
+from nasaq.lang.wide_text import unsimulated_conversion, wide_conversion
 
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
@@ -32,6 +35,8 @@ REAL_FUNCTIONS = frozenset(
 FIXED_RESULTS = {
     "ROUND": "DINT",
     "TRUNC": "DINT",
+    "CEIL": "DINT",  # TIA: the next integer up / down (RND+ / RND-)
+    "FLOOR": "DINT",
     "LEN": "INT",
     "FIND": "INT",
     "WORD_BCD_TO_INT": "INT",
@@ -40,6 +45,12 @@ FIXED_RESULTS = {
     "DINT_TO_BCD_DWORD": "DWORD",
     "BYTE_BCD_TO_INT": "INT",
     "INT_TO_BCD_BYTE": "BYTE",
+    "BCD_TO_INT": "INT",  # S7-SCL Classic's short names, and TIA's
+    "INT_TO_BCD": "WORD",
+    "BCD16_TO_INT": "INT",
+    "INT_TO_BCD16": "WORD",
+    "BCD32_TO_DINT": "DINT",
+    "DINT_TO_BCD32": "DWORD",
 }
 STRING_RESULTS = frozenset(
     ["CONCAT", "LEFT", "RIGHT", "MID", "INSERT", "DELETE", "REPLACE", "I_STRNG"]
@@ -55,15 +66,34 @@ STANDARD = (
     | UNTYPED
     | CONVERSIONS
     | library.NAMES
+    | instructions.NAMES
 )
+
+
+def called_by_name(ctx: Context, name: str) -> bool:
+    """Whether ``name(...)`` calls a function of that name: no variable of the block has the
+    name, or one that is no instance (TIA writes locals with ``#``: ``LEN(IN := #s)`` next to
+    ``#len : INT`` is the instruction)."""
+    variable = ctx.variable(name)
+    return variable is None or not isinstance(variable.type, BlockType)
 
 
 def call(ctx: Context, node: ast.Call) -> Type:
     values = [ctx.type_of(arg.value) for arg in node.args]
     callee = node.callee
-    if isinstance(callee, ast.Name) and ctx.variable(callee.name) is None:
+    if isinstance(callee, ast.Name) and called_by_name(ctx, callee.name):
         upper = callee.name.upper()
+        wide = upper in WIDE_FUNCTIONS or wide_conversion(upper)
+        if wide and ctx.index.named(callee.name) is None:  # ``nasaq.lang.wide_text``
+            if not is_s7_1500(ctx.index.profile):
+                return ctx.report("SCL500", node.loc, what=upper, profile=ctx.index.profile)
+            if unsimulated_conversion(upper):
+                return ctx.report("SCL800", node.loc, what=upper)
+        if upper == "CONCAT" and len(node.args) > 2 and wide_variant(upper, values) != upper:
+            return ctx.report("SCL800", node.loc, what="CONCAT with more than two inputs")
         if upper in STANDARD and ctx.index.named(callee.name) is None:
+            if upper in instructions.NAMES:
+                return _instruction(ctx, upper, node)
             return _standard(upper, node, values)
     if isinstance(callee, ast.Member):
         base = ctx.type_of(callee.base)  # FB1.DB1(...): an FB called with its instance DB
@@ -78,6 +108,36 @@ def call(ctx: Context, node: ast.Call) -> Type:
     return ANYTHING
 
 
+def _instruction(ctx: Context, name: str, node: ast.Call) -> Type:
+    """MAX, MIN, LIMIT, SEL, MUX, SCALE_X, NORM_X: the common type of the values they choose
+    from (``instructions``); MOVE_BLK and the like have no value."""
+    if name == "TIME_TCK":
+        return Elementary("TIME")
+    if name in instructions.TIME_FUNCTIONS:
+        value = instructions.time_result(name, node, ctx.type_of)
+        return ANYTHING if value is None else value
+    if name in instructions.CLOCKS:
+        problem = instructions.clock_output(name, node, ctx.type_of)
+        if problem is not None:
+            assert problem.code is not None
+            ctx.report(problem.code, node.loc, **problem.params)
+        return Elementary("INT")  # RET_VAL
+    if name in instructions.BLOCK_MOVES:
+        wrong = instructions.block_move(name, node, ctx.type_of)
+        if wrong is not None:
+            where, problem = wrong
+            assert problem.code is not None
+            ctx.report(problem.code, where.loc, **problem.params)
+        return ANYTHING
+    args = instructions.arguments(node, name)
+    found = instructions.result(name, [ctx.type_of(arg.value) for arg in args])
+    if isinstance(found, tuple):
+        position, verdict = found
+        assert verdict.code is not None
+        return ctx.report(verdict.code, args[position].value.loc, **verdict.params)
+    return ANYTHING if found is None else found
+
+
 def _standard(name: str, node: ast.Call, values: list[Type]) -> Type:
     if name in CONVERSIONS:
         result = name.split("_TO_", 1)[1]
@@ -86,14 +146,14 @@ def _standard(name: str, node: ast.Call, values: list[Type]) -> Type:
         if result == "STRING":
             return StringType(254)
         return Elementary(LONG.get(result, result))
-    if name in REAL_FUNCTIONS:
-        return Elementary("REAL")
+    if name in REAL_FUNCTIONS:  # of an LREAL an LREAL (S7-1200/1500)
+        return Elementary("LREAL" if any(scalar(v) == "LREAL" for v in values) else "REAL")
     if name in FIXED_RESULTS:
         return Elementary(FIXED_RESULTS[name])
     if name in S5_FUNCTIONS:
         return S5_FUNCTIONS[name].result or ANYTHING
     if name in library.NAMES:
-        found = library.signature(name)
+        found = library.signature(wide_variant(name, values))
         return found.result if found is not None and found.result is not None else ANYTHING
     if name in STRING_RESULTS:
         return StringType(254)

@@ -1,5 +1,6 @@
-"""Rule: the control variable of FOR is an INT or DINT variable (``SCL221``); the start, end and
-step values must be assignable to it (reported as assignments are)."""
+"""Rule: the control variable of FOR is an INT or DINT variable, or an S7-1500 SINT, USINT or
+UINT (``SCL221``); the start, end and step values must be assignable to it (reported as
+assignments are)."""
 
 from __future__ import annotations
 
@@ -13,6 +14,9 @@ from nasaq.lang.types import Elementary
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
 
+# INT and DINT; the S7-1200/1500's SINT, USINT and UINT too (computed as DINTs, ``lower.longs``)
+_COUNTERS = frozenset({*INTEGERS, "SINT", "USINT", "UINT"})
+
 
 def check(ctx: Context, stmt: ast.Stmt) -> None:
     if not isinstance(stmt, ast.For):
@@ -20,7 +24,7 @@ def check(ctx: Context, stmt: ast.Stmt) -> None:
     found = ctx.type_of(stmt.variable)
     if is_silent(found):
         return
-    if not isinstance(found, Elementary) or scalar(found) not in INTEGERS:
+    if not isinstance(found, Elementary) or scalar(found) not in _COUNTERS:
         ctx.report(
             "SCL221", stmt.variable.loc, name=ctx.text(stmt.variable), actual=describe(found)
         )

@@ -1,8 +1,10 @@
 """Rule: initial values in declarations (seeds-003b §2.5), in FBs, FCs, OBs, DBs and UDTs.
 
 - Only FB parameters and static variables, DB and UDT members take one: a VAR_TEMP (and the
-  VAR of an FC or OB), an in/out, or a parameter of an FC has no memory to hold it
-  (``SCL245``).
+  VAR of an FC or OB) or a structured in/out has no memory to hold it (``SCL245``). An FB's
+  elementary in/out is kept in its instance, so TIA exports give it a start value (accepted).
+  STEP 7 accepts one on an FC input or output too, where it does nothing (every call supplies
+  the parameter): a warning (``SCL921``); an FC in/out stays ``SCL245``.
 - The value must be a constant: literals and CONST names, with operators (``SCL243``).
 - It must be assignable to the declared type, as an assignment (``SCL213``, ``SCL214``,
   ``SCL218``); a text must fit the STRING's length (``SCL218``).
@@ -17,7 +19,16 @@ from typing import TYPE_CHECKING
 from nasaq.ir import BlockKind
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.typecheck.types import CharsConst, assignable, is_silent
-from nasaq.lang.types import ArrayType, DataType, Field, StringType, StructType, type_text
+from nasaq.lang.types import (
+    ArrayType,
+    BlockType,
+    DataType,
+    Elementary,
+    Field,
+    StringType,
+    StructType,
+    type_text,
+)
 
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
@@ -31,7 +42,15 @@ def check(ctx: Context) -> None:
     for section, fields in block.sections:
         for declared in fields:
             items = _items(declared)
-            if items and (section in NO_INITIAL or block.kind is BlockKind.FC):
+            if items and block.kind is BlockKind.FC and section in ("IN", "OUT"):
+                # STEP 7 accepts it, but every call supplies an FC's parameters.
+                if id(declared.initial) not in seen:
+                    ctx.report("SCL921", items[0].loc, name=declared.name, section=section)
+                _field(ctx, declared, seen)
+            elif items and (section in NO_INITIAL or block.kind is BlockKind.FC):
+                if section == "IN_OUT" and block.kind is BlockKind.FB and _by_value(declared):
+                    _field(ctx, declared, seen)  # kept in the instance, as TIA's start value
+                    continue
                 if id(declared.initial) not in seen:
                     seen.add(id(declared.initial))
                     where = items[0].loc
@@ -42,6 +61,13 @@ def check(ctx: Context) -> None:
     if isinstance(struct, StructType) and not block.sections:  # a STRUCT, not TIA's VARs
         for declared in struct.fields:
             _field(ctx, declared, seen)
+
+
+def _by_value(declared: Field) -> bool:
+    """An FB in/out its instance holds by value (an elementary type; not a STRING, a
+    DATE_AND_TIME or a structure, which are passed as a pointer)."""
+    data_type = declared.type
+    return type(data_type) is Elementary and data_type.name != "DATE_AND_TIME"
 
 
 def is_constant(ctx: Context, node: ast.Expr) -> bool:
@@ -102,16 +128,50 @@ def _field(ctx: Context, declared: Field, seen: set[int]) -> None:
         else:
             element = target.element if isinstance(target, ArrayType) else target
             for value, _times in values:
-                store_constant(ctx, declared.name, value, element)
+                if isinstance(value, ast.InitStruct):
+                    _members(ctx, declared.name, value, element)
+                else:
+                    store_constant(ctx, declared.name, value, element)
     inner = target.element if isinstance(target, ArrayType) else target
     if isinstance(inner, StructType):
         for member in inner.fields:
             _field(ctx, member, seen)
 
 
-def _flatten(items: list[ast.InitItem], times: int = 1) -> list[tuple[ast.Expr, int]]:
-    """The values of an initialiser with how often each stands (``3(1, 2)``: 1 and 2, 3 times)."""
-    found: list[tuple[ast.Expr, int]] = []
+def _members(ctx: Context, name: str, value: ast.InitStruct, target: DataType) -> None:
+    """TIA's ``(v1, (), v3)`` for a STRUCT or UDT: at most one item per member, each checked
+    as that member's initial value (``()`` keeps the member's own)."""
+    if is_silent(target):
+        return  # an unknown type: reported where it is named
+    fields = _struct_fields(ctx, target)
+    if fields is None:
+        ctx.report("SCL922", value.loc, name=name, type=type_text(target))
+        return
+    if len(value.values) > len(fields):
+        ctx.report("SCL244", value.loc, name=name, count=len(fields), given=len(value.values))
+        return
+    for member, item in zip(fields, value.values, strict=False):
+        if isinstance(item, ast.InitStruct) and not item.values:
+            continue
+        _field(ctx, Field(f"{name}.{member.name}", member.type, [item]), set())
+
+
+def _struct_fields(ctx: Context, target: DataType) -> tuple[Field, ...] | None:
+    if isinstance(target, StructType):
+        return target.fields
+    if isinstance(target, BlockType) and target.kind == "UDT":
+        udt = ctx.index.get(BlockKind.UDT, target.number)
+        if udt is not None and isinstance(udt.db_type, StructType):
+            return udt.db_type.fields
+    return None
+
+
+def _flatten(
+    items: list[ast.InitItem], times: int = 1
+) -> list[tuple[ast.Expr | ast.InitStruct, int]]:
+    """The values of an initialiser with how often each stands (``3(1, 2)``: 1 and 2, 3 times);
+    a structure's ``(...)`` is one value."""
+    found: list[tuple[ast.Expr | ast.InitStruct, int]] = []
     for item in items:
         if isinstance(item, ast.InitRepeat):
             found += _flatten(item.values, times * int(item.count.replace("_", "")))

@@ -1,7 +1,9 @@
 """Rule: jump labels (seeds-003b §2.10). A label must be declared in the LABEL section
 (``SCL238``, once per label), mark one statement only (``SCL239``), and a GOTO needs a label that
 marks a statement (``SCL240``). GOTO may leave a loop but not jump into one (``SCL241``). Many
-GOTOs may go to one label. A name declared twice in LABEL sections is ``SCL206``."""
+GOTOs may go to one label. A name declared twice in LABEL sections is ``SCL206``. A block
+without a LABEL section is TIA Portal's SCL, whose jump labels are not declared: there only
+``SCL239``-``SCL241`` apply (issue 20, the forms part)."""
 
 from __future__ import annotations
 
@@ -45,8 +47,8 @@ def _declarations(ctx: Context) -> None:
 
 
 def _declared(ctx: Context, key: str, label: str, where: ast.Loc) -> bool:
-    if key in ctx.block.labels:
-        return True
+    if key in ctx.block.labels or not ctx.block.labels:  # no LABEL section: TIA Portal's
+        return True  # jump labels are not declared
     if f"label:{key}" not in ctx.reported:
         ctx.reported.add(f"label:{key}")
         ctx.report("SCL238", where, label=label, block=ctx.block.label)

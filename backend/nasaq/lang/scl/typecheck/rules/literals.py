@@ -4,9 +4,12 @@ constants get a type that adapts to where they are used (``types.IntConst`` ...)
 
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 from typing import TYPE_CHECKING
 
+from nasaq.lang import s7_1500_values
+from nasaq.lang.profiles import is_s7_1500, needs_s7_1500
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.typecheck.types import (
     BIT_LIMITS,
@@ -18,8 +21,10 @@ from nasaq.lang.scl.typecheck.types import (
     Type,
 )
 from nasaq.lang.stl import constants
+from nasaq.lang.stl.build import unquote_chars
 from nasaq.lang.stl.constants import ConstantError
-from nasaq.lang.types import Elementary
+from nasaq.lang.types import Elementary, StringType
+from nasaq.lang.wide_text import wide_text
 
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
@@ -27,7 +32,10 @@ if TYPE_CHECKING:
 BOOL = Elementary("BOOL")
 REAL = Elementary("REAL")
 _INTEGER_PREFIXES = {"INT": "INT", "DINT": "DINT"}
+_INTEGER_PREFIXES |= {name: name for name in ("SINT", "USINT", "UINT", "UDINT", "LINT", "ULINT")}
 _BIT_PREFIXES = {
+    "LW": "LWORD",
+    "LWORD": "LWORD",
     "B": "BYTE",
     "BYTE": "BYTE",
     "W": "WORD",
@@ -46,13 +54,27 @@ def literal(ctx: Context, node: ast.Literal) -> Type:
         return _integer(node.text)
     if node.kind == "STRING":
         return CharsConst(_length(node.text[1:-1]))
+    wide = wide_text(node.text.partition("#")[0])
+    if wide is not None:  # WSTRING#'..', WCHAR#'.' (issue 20, the functions part)
+        if not is_s7_1500(ctx.index.profile):
+            return ctx.report("SCL500", node.loc, what=node.text, profile=ctx.index.profile)
+        body = node.text.partition("#")[2]
+        units = len(unquote_chars(body).encode("utf-16-be", errors="surrogatepass")) // 2
+        if wide == "WCHAR":
+            if units != 1:
+                return ctx.report("SCL218", node.loc, text=node.text, type="WCHAR", hint="")
+            return Elementary("WCHAR")
+        return StringType(units, wide=True)
     try:
-        return _typed(node.text)
+        found = _typed(node.text)
     except ConstantError as error:
         params = dict(error.params)
         if error.code == "STL214":
             return ctx.report("SCL218", node.loc, **params)
         return ctx.report("SCL219", node.loc, text=params["text"], reason=params["reason"])
+    if type(found) is Elementary and needs_s7_1500(found.name, ctx.index.profile):
+        return ctx.report("SCL500", node.loc, what=node.text, profile=ctx.index.profile)
+    return found
 
 
 @lru_cache(maxsize=4096)  # programs repeat the same few numbers
@@ -117,12 +139,17 @@ def _typed(text: str) -> Type:
         elif _length(body[1:-1]) != 1:
             raise _bad(text, "a CHAR is one character")
         return Elementary("CHAR")
-    if prefix == "REAL":
+    if prefix in ("LT", "LTIME"):
+        s7_1500_values.ltime_ns(body, text)
+        return Elementary("LTIME")
+    if prefix in ("REAL", "LREAL"):
         try:
-            float(body.replace("_", ""))
+            number = float(body.replace("_", ""))
         except ValueError:
             raise _bad(text, "not a number") from None
-        return Elementary("REAL")
+        if prefix == "LREAL" and not math.isfinite(number):  # LREAL#1e400
+            raise _range(text, "LREAL")
+        return Elementary(prefix)
     if prefix in ("T", "TIME"):
         return TimeConst(int(constants.time(body, text).value))
     if prefix in ("S5T", "S5TIME"):

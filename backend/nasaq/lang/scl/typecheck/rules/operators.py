@@ -13,18 +13,24 @@ from __future__ import annotations
 from functools import cache
 from typing import TYPE_CHECKING
 
+from nasaq.lang import s7_1500_types as s7_1500
 from nasaq.lang.scl import ast
+from nasaq.lang.scl.typecheck import time_dint
 from nasaq.lang.scl.typecheck.types import (
     ANYTHING,
+    BIT_LIMITS,
     BITS,
     ERROR,
     INTEGERS,
     NUMBERS,
     RANGES,
     TEXT,
+    BitsConst,
+    CharsConst,
     IntConst,
     Type,
     describe,
+    integer_of,
     is_silent,
     scalar,
     wider,
@@ -35,6 +41,9 @@ if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
 
 LOGIC = frozenset({"AND", "&", "OR", "XOR"})
+# The S7-1200/1500 types (the checker never sees them under a classic profile).
+_NEW = frozenset({*s7_1500.NEW_INTEGERS, "LREAL", "LWORD", "LTIME"})
+_SIGNED_1500 = frozenset({"SINT", "LINT", "LREAL", "LTIME"})
 COMPARE = frozenset({"=", "<>", "<", ">", "<=", ">="})
 ARITHMETIC = frozenset({"+", "-", "*", "/"})
 INTEGER_ONLY = frozenset({"DIV", "MOD"})
@@ -65,11 +74,11 @@ def unary(ctx: Context, node: ast.Unary) -> Type:
         return value
     name = scalar(value)
     if node.op == "NOT":
-        if name in BITS:
+        if name in BITS or name == "LWORD":
             return Elementary(name)
     elif isinstance(value, IntConst):
         return IntConst(-value.value if node.op == "-" else value.value)
-    elif name in NUMBERS or name == "TIME":
+    elif name in NUMBERS or name == "TIME" or name in _SIGNED_1500:
         return value
     return ctx.report("SCL212", node.loc, op=node.op, operand=describe(value))
 
@@ -77,8 +86,19 @@ def unary(ctx: Context, node: ast.Unary) -> Type:
 def binary(ctx: Context, node: ast.Binary) -> Type:
     left = ctx.type_of(node.left)
     right = ctx.type_of(node.right)
+    if (type(left) is IntConst) is not (type(right) is IntConst) and (
+        node.op in COMPARE or node.op in LOGIC
+    ):
+        left, right = _bit_constant(node.op, left, right)
     found: Type | None
+    wide = _wide_text(ctx, node, left, right)
+    if wide is not None:
+        return wide
     a, b = _plain(left), _plain(right)
+    if a in _NEW and type(right) is IntConst:  # `u + 2`: the constant takes u's type (TIA)
+        b = _constant_as(right.value, a) or b
+    elif b in _NEW and type(left) is IntConst:
+        a = _constant_as(left.value, b) or a
     if a is not None and b is not None and not (type(left) is type(right) is IntConst):
         found = _combined(node.op, a, b)  # the common case, in short
     elif left is ERROR or right is ERROR:
@@ -88,10 +108,49 @@ def binary(ctx: Context, node: ast.Binary) -> Type:
     else:
         found = _result(node.op, left, right)
     if found is None:
+        found = time_dint.combined(ctx, node.op, left, right)  # S7-1500: TIME with DINT
+    if found is None:
         return ctx.report(
             "SCL211", node.loc, op=node.op, left=describe(left), right=describe(right)
         )
     return found
+
+
+_WIDE = ("WSTRING", "WCHAR")
+
+
+def _wide_text(ctx: Context, node: ast.Binary, left: Type, right: Type) -> Type | None:
+    """A comparison with a WSTRING or WCHAR (``nasaq.lang.wide_text``): with a WSTRING, a WCHAR
+    or a text constant (one character for two WCHARs) it is a BOOL. None otherwise: the other
+    operations and mixtures with STRING/CHAR are SCL211 as usual."""
+    names = (scalar(left), scalar(right))
+    if names[0] not in _WIDE and names[1] not in _WIDE:
+        return None
+    if node.op not in COMPARE:
+        return None
+    if not all(
+        name in _WIDE or isinstance(v, CharsConst)
+        for name, v in zip(names, (left, right), strict=True)
+    ):
+        return None
+    if "WSTRING" in names:
+        return BOOL
+    if all(not isinstance(v, CharsConst) or v.length == 1 for v in (left, right)):
+        return BOOL  # two characters: their codes
+    return None
+
+
+def _bit_constant(op: str, left: Type, right: Type) -> tuple[Type, Type]:
+    """An untyped constant compared with, or combined with, a bit string is that bit string when
+    it fits (``w <> 0``, ``d AND 255``, ``x = 1`` for a BOOL), as STEP 7 compiles it."""
+    constant, other = (left, right) if type(left) is IntConst else (right, left)
+    assert isinstance(constant, IntConst)
+    name = _plain(other)
+    fits = name in BIT_LIMITS and 0 <= constant.value <= BIT_LIMITS[name]
+    if not fits or (name == "BOOL" and op not in COMPARE):
+        return left, right
+    as_bits = Elementary(name or "")
+    return (as_bits, right) if constant is left else (left, as_bits)
 
 
 def _plain(value: Type) -> str | None:
@@ -108,6 +167,14 @@ def _result(op: str, left: Type, right: Type) -> Type | None:
     a, b = scalar(left), scalar(right)
     if a is None or b is None:
         return None
+    # A based constant (16#10) is an integer (S7-SCL §9.1.3) unless it meets a bit string or
+    # a logic operator: 16#10 + 2#1010 is an INT sum, w AND 16#FF a WORD operation.
+    if op not in LOGIC:
+        left_bits = a in BITS and not isinstance(left, BitsConst)
+        if isinstance(left, BitsConst) and not (b in BITS and not isinstance(right, BitsConst)):
+            a = integer_of(left) or a
+        if isinstance(right, BitsConst) and not left_bits:
+            b = integer_of(right) or b
     if isinstance(left, IntConst) and isinstance(right, IntConst):
         folded = _fold(op, left.value, right.value)
         if folded is not None:
@@ -118,6 +185,8 @@ def _result(op: str, left: Type, right: Type) -> Type | None:
 @cache  # the result depends on the operator and the two type names only: computed once each
 def _combined(op: str, a: str, b: str) -> Elementary | None:
     common = wider(a, b)
+    if common in _NEW or a in _NEW or b in _NEW:
+        return _combined_1500(op, a, b, common)
     if op in LOGIC:
         return Elementary(common) if common in BITS else None
     if op in COMPARE:
@@ -140,6 +209,38 @@ def _combined(op: str, a: str, b: str) -> Elementary | None:
             return Elementary("TIME")
         timed = TIME_ARITHMETIC.get((op, a, b))
         return Elementary(timed) if timed is not None else None
+    return None
+
+
+def _constant_as(value: int, kind: str) -> str | None:
+    """``kind`` when the integer constant ``value`` is a valid ``kind`` (an S7-1500 type)."""
+    if kind in s7_1500.FLOATS:
+        return kind
+    limits = s7_1500.INTEGER_RANGES.get(kind)
+    return kind if limits is not None and limits[0] <= value <= limits[1] else None
+
+
+def _combined_1500(op: str, a: str, b: str, common: str | None) -> Elementary | None:
+    """An operation with an S7-1200/1500 type (``typecheck.s7_1500``): the result is the common
+    type (``SINT + SINT`` a SINT, ``INT + UINT`` a DINT); ``**`` is an LREAL when an operand is,
+    ``DIV``/``MOD`` integers only; LTIME works as TIME does, in nanoseconds."""
+    if op in LOGIC:
+        return Elementary(common) if common in s7_1500.BIT_STRINGS else None
+    if op in COMPARE:
+        comparable = common in s7_1500.ALL_NUMBERS or common in s7_1500.BIT_STRINGS
+        return BOOL if comparable or common == "LTIME" else None
+    if op == "**":
+        if a in s7_1500.ALL_NUMBERS and b in s7_1500.ALL_NUMBERS:
+            return Elementary("LREAL" if "LREAL" in (a, b) else "REAL")
+        return None
+    if common == "LTIME" and op in ("+", "-"):
+        return Elementary("LTIME")
+    if a == "LTIME" and b in s7_1500.ALL_INTEGERS and op in ("*", "/", "DIV"):
+        return Elementary("LTIME")
+    if op in INTEGER_ONLY:
+        return Elementary(common) if common in s7_1500.ALL_INTEGERS else None
+    if op in ARITHMETIC:
+        return Elementary(common) if common in s7_1500.ALL_NUMBERS else None
     return None
 
 

@@ -1,7 +1,8 @@
 """Rule: every name must be declared (``SCL201``): a variable, parameter or constant of the
 block, the FC's own name (its return value), a block, or a symbol of the symbol table. ``OK``
 and ``ENO`` are predefined BOOL variables of every code block (seeds-003b §2.11): the OK flag,
-and the block's own ENO."""
+and the block's own ENO. A system instruction Nasaq does not simulate (``RUNTIME``, ``VAL_STRG``
+..., ``nasaq.lang.tia_system``) is ``SCL920`` instead, which says so."""
 
 from __future__ import annotations
 
@@ -11,6 +12,7 @@ from nasaq.ir import BlockKind
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.typecheck.operands import block_value, function_value, symbol_type
 from nasaq.lang.scl.typecheck.types import ERROR, Type
+from nasaq.lang.tia_system import tia_system
 from nasaq.lang.types import Elementary
 
 if TYPE_CHECKING:
@@ -44,6 +46,9 @@ def _undeclared(ctx: Context, node: ast.Name | ast.Local | ast.Symbol, shown: st
     if key in ctx.reported:
         return ERROR
     ctx.reported.add(key)
+    system = tia_system(node.name) if isinstance(node, ast.Name) else None
+    if system is not None:  # RUNTIME, VAL_STRG ... (``nasaq.lang.tia_system``)
+        return ctx.report("SCL920", node.loc, name=system)
     return ctx.report("SCL201", node.loc, name=shown, block=ctx.block.label)
 
 
