@@ -144,8 +144,9 @@ def suites() -> list[Suite]:
             cwd=ROOT / "backend",
             group="pytest",
         ),
-        # The compilers' own fuzzer, bounded (tests/fuzz/driver.py): 21,000 cases, about 90 s
-        # on both cores; here one worker runs beside the two lanes (which take longer).
+        # The compilers' own fuzzer, bounded (tests/fuzz/driver.py): 21,000 cases, one worker,
+        # about three minutes at the end of the second lane: a third process beside the two lanes
+        # starves the live-server tests of the first.
         Suite(
             "fuzz",
             [
@@ -159,7 +160,6 @@ def suites() -> list[Suite]:
                 ]
             ],
             junit=REPORTS / "fuzz.xml",
-            beside=True,
         ),
         Suite(
             "playwright",

@@ -68,6 +68,8 @@ from nasaq.cpu.errors import CpuError
 from nasaq.cpu.long_library import BODIES as LONG_BODIES
 from nasaq.ir import Block, BlockKind
 from nasaq.lang.iec_library import FAMILY, FUNCTIONS, WIDE
+from nasaq.lang.number_text import TIME_CONVERSIONS
+from nasaq.lang.s7_1500_types import INTEGER_RANGES
 
 if TYPE_CHECKING:
     from nasaq.cpu.codegen.compiler import Compiled
@@ -320,6 +322,82 @@ def _r_strng(p: list[Ref]) -> int:
     return 1
 
 
+# TIA Portal's INT_TO_STRING ... (``nasaq.lang.number_text``): S_CONV's format, the number
+# right-justified in a field of the type's width, blanks before it, no "+" (a REAL has one).
+_FIELDS = {"SINT": (1, 4), "USINT": (1, 4), "INT": (2, 6), "UINT": (2, 6), "DINT": (4, 11)}
+_FIELDS |= {"UDINT": (4, 11), "LINT": (8, 21), "ULINT": (8, 21)}  # (bytes, characters)
+_TIA_NUMBER = re.compile(rb"\s*([+-]?[0-9]+)")
+_TIA_REAL = re.compile(rb"\s*([+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)")
+
+
+def _tia_text(kind: str) -> Body:
+    size, width = _FIELDS[kind]
+    signed = not kind.startswith("U")
+
+    def body(p: list[Ref]) -> int:
+        value = int.from_bytes(_bytes(p[0], size), "big", signed=signed)
+        return _put_text(p[1], f"{value:>{width}d}".encode())
+
+    return body
+
+
+def _tia_real_text(p: list[Ref]) -> int:
+    value = _real(p[0])
+    if value != value or value in (float("inf"), float("-inf")):
+        return 0
+    return _put_text(p[1], f"{value:>+14.6E}".encode())
+
+
+def _rest_blank(p: list[Ref], end: int) -> bool:
+    return not _text(p[0])[end:].strip()
+
+
+def _tia_number(limits: tuple[int, int], width: int) -> Body:
+    def body(p: list[Ref]) -> int:
+        found = _TIA_NUMBER.match(_text(p[0]))  # up to the first character of no number
+        value = int(found[1]) if found else 0
+        limited = min(max(value, limits[0]), limits[1])
+        _put(p[1], limited.to_bytes(width, "big", signed=limits[0] < 0))
+        return int(found is not None and _rest_blank(p, found.end()) and limited == value)
+
+    return body
+
+
+def _tia_real(p: list[Ref]) -> int:
+    text = _text(p[0])
+    found = _TIA_REAL.match(text)
+    value = float(found[1]) if found else 0.0
+    limited = min(max(value, -REAL_MAX), REAL_MAX)
+    _put(p[1], _F.pack(limited))
+    return int(found is not None and _rest_blank(p, found.end()) and limited == value)
+
+
+_TIME_FORMS = {  # (bytes, signed, range)
+    "TIME": (4, True, DINT_RANGE),
+    "TIME_OF_DAY": (4, False, (0, 86_399_999)),
+    "UDINT": (4, False, (0, 2**32 - 1)),
+    "INT": (2, True, INT_RANGE),
+    "UINT": (2, False, (0, 2**16 - 1)),
+    "LINT": (8, True, (-(2**63), 2**63 - 1)),
+    "ULINT": (8, False, (0, 2**64 - 1)),
+}
+
+
+def _tia_time(source: str, target: str) -> Body:
+    """A TIME's milliseconds to or from a number: outside the target's range, its low bits and
+    BR = 0 (as ``DINT_TO_INT``)."""
+    size_in, signed_in, _ = _TIME_FORMS[source]
+    size_out, _signed, (low, high) = _TIME_FORMS[target]
+    mask = (1 << 8 * size_out) - 1
+
+    def body(p: list[Ref]) -> int:
+        value = int.from_bytes(_bytes(p[0], size_in), "big", signed=signed_in)
+        _put(p[1], (value & mask).to_bytes(size_out, "big"))
+        return int(low <= value <= high)
+
+    return body
+
+
 def _whole_number(p: list[Ref], longest: int, limits: tuple[int, int], width: int) -> int:
     text = _text(p[0])
     if not 0 < len(text) <= longest or _DIGITS.fullmatch(text) is None:
@@ -487,6 +565,14 @@ BODIES: dict[str, Body] = {
     "STRNG_I": _strng_i,
     "STRNG_DI": _strng_di,
     "STRNG_R": _strng_r,
+    **{f"{kind}_TO_STRING": _tia_text(kind) for kind in _FIELDS},
+    "REAL_TO_STRING": _tia_real_text,
+    **{
+        f"STRING_TO_{kind}": _tia_number(INTEGER_RANGES[kind], size)
+        for kind, (size, _) in _FIELDS.items()
+    },
+    "STRING_TO_REAL": _tia_real,
+    **{name: _tia_time(*kinds) for name, kinds in TIME_CONVERSIONS.items()},
     "AD_DT_TM": _ad_dt_tm,
     "SB_DT_TM": _sb_dt_tm,
     "SB_DT_DT": _sb_dt_dt,

@@ -199,8 +199,9 @@ def _with_long_library() -> None:
     """The hidden FCs of the S7-1200/1500 types (``nasaq.lang.long_library``) are library FCs
     too: added to the program when called, their bodies Python."""
     from nasaq.lang.long_library import functions
+    from nasaq.lang.number_text import functions as number_text
 
-    for found in functions():
+    for found in [*functions(), *number_text()]:  # and TIA's INT_TO_STRING ...
         FUNCTIONS[found.name] = found
         BY_NUMBER[found.number] = found
 

@@ -88,9 +88,12 @@ def test_every_library_function_has_a_body_and_its_siemens_number() -> None:
     some = {name: numbers[name] for name in ("CONCAT", "I_STRNG", "RIGHT", "AD_DT_TM", "SB_DT_DT")}
     assert some == {"CONCAT": 2, "I_STRNG": 16, "RIGHT": 32, "AD_DT_TM": 1, "SB_DT_DT": 34}
     assert len(BY_NUMBER) == len(FUNCTIONS)
-    # the 34 of the Standard Library; FC 660-676 the WSTRING versions of the STRING ones and
-    # the two conversions; from FC 700 on the S7-1500 types' (``lang.long_library``)
-    assert len([number for number in BY_NUMBER if number < 660]) == 34
+    # the 34 of the Standard Library; FC 620-659 TIA's number/STRING and TIME conversions
+    # (``lang.number_text``); FC 660-676 the WSTRING versions of the STRING ones and the two
+    # conversions; from FC 700 on the S7-1500 types' (``lang.long_library``)
+    assert len([number for number in BY_NUMBER if number < 620]) == 34
+    tia = {BY_NUMBER[number].name for number in BY_NUMBER if 620 <= number < 660}
+    assert {"INT_TO_STRING", "STRING_TO_REAL", "UDINT_TO_TIME"} <= tia
     wide = {BY_NUMBER[number].name for number in range(660, 677)}
     assert {"LEN_WSTRING", "CONCAT_WSTRING", "EQ_WSTRING", "NE_WSTRING"} <= wide
 

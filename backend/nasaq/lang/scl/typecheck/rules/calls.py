@@ -7,6 +7,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nasaq.ir import BlockKind
+from nasaq.lang import number_text
 from nasaq.lang.iec_library import WIDE_FUNCTIONS, wide_variant
 from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.scl import ast
@@ -89,6 +90,9 @@ def call(ctx: Context, node: ast.Call) -> Type:
                 return ctx.report("SCL500", node.loc, what=upper, profile=ctx.index.profile)
             if unsimulated_conversion(upper):
                 return ctx.report("SCL800", node.loc, what=upper)
+        classic = not is_s7_1500(ctx.index.profile)
+        if upper in number_text.S7_1500_ONLY and classic and ctx.index.named(callee.name) is None:
+            return ctx.report("SCL500", node.loc, what=upper, profile=ctx.index.profile)
         if upper == "CONCAT" and len(node.args) > 2 and wide_variant(upper, values) != upper:
             return ctx.report("SCL800", node.loc, what="CONCAT with more than two inputs")
         if upper in STANDARD and ctx.index.named(callee.name) is None:

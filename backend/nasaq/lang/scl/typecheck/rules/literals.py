@@ -1,6 +1,7 @@
 """Rule: constants. A typed constant must be valid for its prefix (``SCL219``) and in the range
 of its type (``SCL218``): ``INT#40000``, ``BYTE#16#1FF``, ``T#25d``, ``D#1989-12-31``. Untyped
-constants get a type that adapts to where they are used (``types.IntConst`` ...)."""
+constants get a type that adapts to where they are used (``types.IntConst`` ...). STEP 7's
+``L#2000`` is a DINT under every profile."""
 
 from __future__ import annotations
 
@@ -31,7 +32,7 @@ if TYPE_CHECKING:
 
 BOOL = Elementary("BOOL")
 REAL = Elementary("REAL")
-_INTEGER_PREFIXES = {"INT": "INT", "DINT": "DINT"}
+_INTEGER_PREFIXES = {"INT": "INT", "DINT": "DINT", "L": "DINT"}  # L#2000: STEP 7's DINT
 _INTEGER_PREFIXES |= {name: name for name in ("SINT", "USINT", "UINT", "UDINT", "LINT", "ULINT")}
 _BIT_PREFIXES = {
     "LW": "LWORD",
