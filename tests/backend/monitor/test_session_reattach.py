@@ -117,10 +117,16 @@ def test_a_client_attaching_after_the_first_left_finds_cpu_forces_breakpoints_an
             bp = first.ok("set_breakpoint", location={"file": "plant.awl", "line": line})
             first.until_held()
             first.until(lambda m: len(m.trend) > 0, "trend samples")
-        # The first client is gone (a reload); the page finds the session by its project.
-        (found,) = _of_project(live, project_id)
+
+        # The first client is gone (a reload); the page finds the session by its project, and
+        # once the server has seen the socket close (it may list the client a moment longer),
+        # with no client.
+        def left() -> dict[str, Any] | None:
+            (session,) = _of_project(live, project_id)
+            return session if session["clients"] == [] else None
+
+        found = wait_for(left, "the first client to leave the session")
         assert found["id"] == session_id
-        assert found["clients"] == []
         with live.monitor(session_id) as second:
             second.ok("subscribe_cpu", on=True)
             state = second.until_mode("HOLD")
