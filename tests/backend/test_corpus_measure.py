@@ -98,6 +98,23 @@ def test_corpus_outside_reference_is_quoted_or_defined_and_not_a_system_name(
     assert corpus.is_outside_reference(defined, lines, {"MOTORDATA"})
 
 
+def test_corpus_names_a_repository_writes_quoted_are_its_global_names(
+    corpus: ModuleType, tmp_path: Path
+) -> None:
+    """A tag-table constant the repository lacks: written ``"K_MAX"`` in one file and ``K_MAX``
+    in another, it is defined outside both; quoted words in comments and texts are no names."""
+    (tmp_path / "a.scl").write_text(
+        'FUNCTION "A" : VOID\nBEGIN\n  "Data".n := "K_MAX"; // "NOTE"\n'
+        '  "Data".s := \'say "HELLO"\';\nEND_FUNCTION\n'
+    )
+    names = corpus.defined_names([str(tmp_path / "a.scl")])
+    assert {"A", "DATA", "K_MAX"} <= names
+    assert "NOTE" not in names
+    assert "HELLO" not in names
+    use = {"code": "SCL201", "params": {"name": "K_MAX"}, "line": 1, "column": 8}
+    assert corpus.is_outside_reference(use, ["  x := K_MAX;"], names)
+
+
 def test_corpus_histogram_replaces_names_but_keeps_the_construct(
     corpus: ModuleType,
 ) -> None:

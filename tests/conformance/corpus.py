@@ -61,6 +61,7 @@ REFERENCE_CODES = {
     "SCL201": "name",
     "SCL202": "type",
     "SCL231": "block",
+    "SCL923": "block",  # a DB the symbol table names but no source of the repository declares
     "STL205": "name",
     "STL213": "block",
     "STL224": "type",
@@ -191,12 +192,23 @@ def jobs_of(corpus: Path, only: str | None) -> tuple[list[Job], list[Job]]:
 
 
 def defined_names(paths: Iterable[str]) -> set[str]:
-    """The block and type names the files define (upper case, without quotes)."""
+    """The block and type names the files define (upper case, without quotes), and the names
+    the files write quoted in code: global names of the project (a PLC tag or a global
+    constant of a tag table the repository lacks, which TIA Portal also resolves where a
+    source writes it without quotes, ``TYPE_NONE`` beside ``"TYPE_NONE"``)."""
     names: set[str] = set()
     for path in paths:
-        for match in BLOCK_HEADER.finditer(read_text(Path(path))):
+        text = read_text(Path(path))
+        for match in BLOCK_HEADER.finditer(text):
             names.add(match.group(1).strip().strip('"').upper())
+        code = _NOT_CODE.sub(" ", text)
+        names.update(match.group(1).upper() for match in _QUOTED_NAME.finditer(code))
     return names
+
+
+# Comments and text constants, where a quoted word is no name; a quoted identifier in code.
+_NOT_CODE = re.compile(r"//[^\n]*|\(\*.*?\*\)|/\*.*?\*/|'(?:[^'$]|\$.)*'", re.DOTALL)
+_QUOTED_NAME = re.compile(r'"([A-Za-z_][A-Za-z0-9_]*)"')
 
 
 # ----------------------------------------------------------------------------- the worker

@@ -3,8 +3,7 @@
  * the project file cpu.properties (the text the page shows is the file's), kept over a reload,
  * and used by the download: with clock memory MB100 the 1 Hz bit M100.5 toggles in RUN.
  */
-import type { APIRequestContext, Page } from '@playwright/test';
-import { test, expect, chooseLanguage } from './fixtures';
+import { test, expect, chooseLanguage, fileText, openCpuProperties, openWorkbench, projectWithFiles } from './fixtures';
 
 const OB1 = `ORGANIZATION_BLOCK OB 1
 BEGIN
@@ -15,42 +14,13 @@ TITLE = The 1 Hz clock bit drives a lamp
 END_ORGANIZATION_BLOCK
 `;
 
-async function makeProject(request: APIRequestContext): Promise<number> {
-  const created = await request.post('/api/projects', { data: { name: `CPU ${Date.now()}-${Math.random()}` } });
-  expect(created.status()).toBe(201);
-  const { id } = (await created.json()) as { id: number };
-  expect((await request.put(`/api/projects/${id}/files/OB1.awl`, { data: { text: OB1 } })).ok()).toBe(true);
-  return id;
-}
-
-async function openProperties(page: Page, projectId: number): Promise<void> {
-  const node = page.getByTestId(`project-node-${projectId}`);
-  await node.click();
-  await expect(node).toHaveAttribute('aria-expanded', 'true');
-  await node.focus();
-  await page.keyboard.press('Shift+F10');
-  await page.getByTestId('tree-menu').getByRole('menuitem', { name: 'CPU properties' }).click();
-  await expect(page.locator('[data-testid="cpu-props"]:not([hidden])')).toBeVisible({ timeout: 15_000 });
-}
-
-async function fileText(request: APIRequestContext, projectId: number): Promise<string> {
-  const response = await request.get(`/api/projects/${projectId}/files/cpu.properties`);
-  expect(response.ok()).toBe(true);
-  return ((await response.json()) as { text: string }).text;
-}
-
 test.describe.configure({ timeout: 240_000 });
 test.use({ viewport: { width: 1440, height: 900 } });
 
 test('set clock memory MB100 and the cycle time, save, reload, download: M100.5 toggles', async ({ page, watch }, testInfo) => {
-  const projectId = await makeProject(page.request);
-  await page.goto('/');
-  await expect(page.getByTestId('server-status')).toHaveAttribute('data-state', 'online');
-  if ((await page.getByTestId('lesson-toggle').getAttribute('aria-pressed')) === 'true') {
-    await page.getByTestId('lesson-toggle').click();
-  }
-  await openProperties(page, projectId);
-  const props = page.locator('[data-testid="cpu-props"]:not([hidden])');
+  const projectId = await projectWithFiles(page.request, 'CPU', { 'OB1.awl': OB1 });
+  await openWorkbench(page);
+  const props = await openCpuProperties(page, projectId);
   // A project without the file gets the defaults written into a new cpu.properties.
   await expect(props.getByLabel('Cycle time', { exact: true })).toHaveValue('10');
   await expect(props.getByLabel('Cycle monitoring time')).toHaveValue('150');
@@ -72,7 +42,7 @@ test('set clock memory MB100 and the cycle time, save, reload, download: M100.5 
   await expect(props.getByTestId('cpu-props-status')).toHaveText('Saved');
 
   // The file holds what the page shows, line for line.
-  const saved = await fileText(page.request, projectId);
+  const saved = await fileText(page.request, projectId, 'cpu.properties');
   expect(saved).toContain('clock_memory = MB100\n');
   expect(saved).toContain('cycle_time = 20\n');
   await props.getByText('Text of cpu.properties').click();
@@ -89,7 +59,7 @@ test('set clock memory MB100 and the cycle time, save, reload, download: M100.5 
   // After a reload the page reads the same values from the file.
   await page.reload();
   await expect(page.getByTestId('server-status')).toHaveAttribute('data-state', 'online');
-  await openProperties(page, projectId);
+  await openCpuProperties(page, projectId);
   await expect(props.getByLabel('Cycle time', { exact: true })).toHaveValue('20');
   await expect(props.getByLabel('Use a memory byte as clock memory')).toBeChecked();
   await expect(props.getByLabel('Memory byte', { exact: true })).toHaveValue('100');

@@ -2,7 +2,7 @@
  * A page fixture that records what a user would never want to see: console errors, uncaught
  * exceptions, failed requests, and any request that leaves the local server.
  */
-import { test as base, expect, type Locator, type Page } from '@playwright/test';
+import { test as base, expect, type APIRequestContext, type Locator, type Page } from '@playwright/test';
 
 export interface PageWatch {
   consoleErrors: string[];
@@ -116,4 +116,47 @@ export async function caretTo(page: Page, line: number): Promise<void> {
     editor?.revealLineInCenter(target);
     editor?.focus();
   }, line);
+}
+
+let madeProjects = 0;
+
+/** A new project (its name made unique) holding `files` (path → text), created over the API. */
+export async function projectWithFiles(request: APIRequestContext, name: string, files: Record<string, string>): Promise<number> {
+  madeProjects += 1;
+  const created = await request.post('/api/projects', { data: { name: `${name} ${Date.now()}-${madeProjects}` } });
+  expect(created.status()).toBe(201);
+  const { id } = (await created.json()) as { id: number };
+  for (const [path, text] of Object.entries(files)) {
+    expect((await request.put(`/api/projects/${id}/files/${path}`, { data: { text } })).ok()).toBe(true);
+  }
+  return id;
+}
+
+/** The text of a project file, read over the API. */
+export async function fileText(request: APIRequestContext, projectId: number, path: string): Promise<string> {
+  const response = await request.get(`/api/projects/${projectId}/files/${path}`);
+  expect(response.ok()).toBe(true);
+  return ((await response.json()) as { text: string }).text;
+}
+
+/** The workbench loaded and online, with the lesson panel closed. */
+export async function openWorkbench(page: Page): Promise<void> {
+  await page.goto('/');
+  await expect(page.getByTestId('server-status')).toHaveAttribute('data-state', 'online');
+  if ((await page.getByTestId('lesson-toggle').getAttribute('aria-pressed')) === 'true') {
+    await page.getByTestId('lesson-toggle').click();
+  }
+}
+
+/** Opens the CPU properties page of a project from its row's context menu (Shift+F10). */
+export async function openCpuProperties(page: Page, projectId: number): Promise<Locator> {
+  const node = page.getByTestId(`project-node-${projectId}`);
+  await node.click();
+  await expect(node).toHaveAttribute('aria-expanded', 'true');
+  await node.focus();
+  await page.keyboard.press('Shift+F10');
+  await page.getByTestId('tree-menu').getByRole('menuitem', { name: 'CPU properties' }).click();
+  const props = page.locator('[data-testid="cpu-props"]:not([hidden])');
+  await expect(props).toBeVisible({ timeout: 15_000 });
+  return props;
 }

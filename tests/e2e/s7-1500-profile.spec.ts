@@ -3,8 +3,7 @@
  * UINT is refused for the S7-300 with SCL500 ("LREAL needs the S7-1200/1500 profile"); with the
  * family chosen and saved, it compiles without a problem and downloads.
  */
-import type { APIRequestContext, Page } from '@playwright/test';
-import { test, expect, chooseLanguage } from './fixtures';
+import { test, expect, chooseLanguage, fileText, openCpuProperties, openWorkbench, projectWithFiles } from './fixtures';
 
 const MAIN = `DATA_BLOCK "Data"
 STRUCT
@@ -21,36 +20,13 @@ BEGIN
 END_ORGANIZATION_BLOCK
 `;
 
-async function makeProject(request: APIRequestContext): Promise<number> {
-  const created = await request.post('/api/projects', { data: { name: `S7-1500 ${Date.now()}` } });
-  expect(created.status()).toBe(201);
-  const { id } = (await created.json()) as { id: number };
-  expect((await request.put(`/api/projects/${id}/files/Main.scl`, { data: { text: MAIN } })).ok()).toBe(true);
-  return id;
-}
-
-async function openProperties(page: Page, projectId: number): Promise<void> {
-  const node = page.getByTestId(`project-node-${projectId}`);
-  await node.click();
-  await expect(node).toHaveAttribute('aria-expanded', 'true');
-  await node.focus();
-  await page.keyboard.press('Shift+F10');
-  await page.getByTestId('tree-menu').getByRole('menuitem', { name: 'CPU properties' }).click();
-  await expect(page.locator('[data-testid="cpu-props"]:not([hidden])')).toBeVisible({ timeout: 15_000 });
-}
-
 test.describe.configure({ timeout: 180_000 });
 test.use({ viewport: { width: 1440, height: 900 } });
 
 test('choose the S7-1200/1500 family: LREAL and UINT compile and download', async ({ page, watch }, testInfo) => {
-  const projectId = await makeProject(page.request);
-  await page.goto('/');
-  await expect(page.getByTestId('server-status')).toHaveAttribute('data-state', 'online');
-  if ((await page.getByTestId('lesson-toggle').getAttribute('aria-pressed')) === 'true') {
-    await page.getByTestId('lesson-toggle').click();
-  }
-  await openProperties(page, projectId);
-  const props = page.locator('[data-testid="cpu-props"]:not([hidden])');
+  const projectId = await projectWithFiles(page.request, 'S7-1500', { 'Main.scl': MAIN });
+  await openWorkbench(page);
+  const props = await openCpuProperties(page, projectId);
   const family = props.getByLabel('CPU family');
   await expect(family).toHaveValue('S7-300');
 
@@ -64,8 +40,7 @@ test('choose the S7-1200/1500 family: LREAL and UINT compile and download', asyn
   await family.selectOption('S7-1500');
   await props.getByTestId('cpu-props-save').click();
   await expect(props.getByTestId('cpu-props-status')).toHaveText('Saved');
-  const saved = await page.request.get(`/api/projects/${projectId}/files/cpu.properties`);
-  expect(((await saved.json()) as { text: string }).text).toContain('profile = S7-1500');
+  expect(await fileText(page.request, projectId, 'cpu.properties')).toContain('profile = S7-1500');
 
   await page.keyboard.press('Control+F7');
   await expect(list.getByTestId('diagnostic').filter({ hasText: 'SCL500' })).toHaveCount(0, { timeout: 30_000 });

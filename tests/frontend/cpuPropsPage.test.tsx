@@ -10,6 +10,7 @@ import { I18nextProvider } from 'react-i18next';
 import { beforeEach, describe, expect, it } from 'vitest';
 import { CpuPropertiesTab } from '../../frontend/src/cpuprops/CpuPropertiesTab';
 import { EditorTabsProvider, useEditorTabs, type SourceTab } from '../../frontend/src/editor/EditorTabsContext';
+import type { Language } from '../../frontend/src/i18n/languages';
 import { createI18n } from '../../frontend/src/i18n/setup';
 import { projectContents } from '../../frontend/src/projects/projectContents';
 import { json, mockServer } from './helpers';
@@ -61,28 +62,34 @@ function OpenPage() {
   return tab ? <CpuPropertiesTab tab={tab} active /> : null;
 }
 
+/** The page opened in `language` over the fake server; returns the saves it makes, in order. */
+function openWithServer(language: Language): Array<{ text: string; base_version: number | null }> {
+  const saves: Array<{ text: string; base_version: number | null }> = [];
+  mockServer({
+    'POST /api/cpu-properties/check': (init) => json(check((JSON.parse(String(init?.body)) as { text: string }).text)),
+    'PUT /api/projects/1/files/cpu.properties': (init) => {
+      saves.push(JSON.parse(String(init?.body)));
+      return json({ name: 'cpu.properties', language: 'cpu', size: 1, version: 4, created_at: '', updated_at: '' });
+    },
+    'GET /api/projects/1/files': () => json([]),
+    'GET /api/projects/1/blocks': () => json({ blocks: [], diagnostics: [] }),
+  });
+  render(
+    <I18nextProvider i18n={createI18n(language)}>
+      <EditorTabsProvider>
+        <OpenPage />
+      </EditorTabsProvider>
+    </I18nextProvider>,
+  );
+  return saves;
+}
+
 beforeEach(() => projectContents.clear());
 
 describe('the CPU properties page', () => {
   it('shows a bad value with its problem and saves only good values, line by line', async () => {
-    const saves: Array<{ text: string; base_version: number | null }> = [];
-    mockServer({
-      'POST /api/cpu-properties/check': (init) => json(check((JSON.parse(String(init?.body)) as { text: string }).text)),
-      'PUT /api/projects/1/files/cpu.properties': (init) => {
-        saves.push(JSON.parse(String(init?.body)));
-        return json({ name: 'cpu.properties', language: 'cpu', size: 1, version: 4, created_at: '', updated_at: '' });
-      },
-      'GET /api/projects/1/files': () => json([]),
-      'GET /api/projects/1/blocks': () => json({ blocks: [], diagnostics: [] }),
-    });
+    const saves = openWithServer('fa');
     const user = userEvent.setup();
-    render(
-      <I18nextProvider i18n={createI18n('fa')}>
-        <EditorTabsProvider>
-          <OpenPage />
-        </EditorTabsProvider>
-      </I18nextProvider>,
-    );
     const cycle = (await screen.findByLabelText('زمان سیکل')) as HTMLInputElement;
     await waitFor(() => expect(cycle.value).toBe('10'));
     expect(screen.getByTestId('cpu-props').getAttribute('dir')).toBe('rtl');
@@ -104,24 +111,8 @@ describe('the CPU properties page', () => {
   }, 30_000);
 
   it('offers the S7-1200/1500 family as a profile and saves it', async () => {
-    const saves: Array<{ text: string; base_version: number | null }> = [];
-    mockServer({
-      'POST /api/cpu-properties/check': (init) => json(check((JSON.parse(String(init?.body)) as { text: string }).text)),
-      'PUT /api/projects/1/files/cpu.properties': (init) => {
-        saves.push(JSON.parse(String(init?.body)));
-        return json({ name: 'cpu.properties', language: 'cpu', size: 1, version: 4, created_at: '', updated_at: '' });
-      },
-      'GET /api/projects/1/files': () => json([]),
-      'GET /api/projects/1/blocks': () => json({ blocks: [], diagnostics: [] }),
-    });
+    const saves = openWithServer('en');
     const user = userEvent.setup();
-    render(
-      <I18nextProvider i18n={createI18n('en')}>
-        <EditorTabsProvider>
-          <OpenPage />
-        </EditorTabsProvider>
-      </I18nextProvider>,
-    );
     const profile = (await screen.findByLabelText('CPU family')) as HTMLSelectElement;
     expect([...profile.options].map((option) => option.textContent)).toEqual(['S7-300', 'S7-400', 'S7-1200/1500']);
     await user.selectOptions(profile, 'S7-1500');

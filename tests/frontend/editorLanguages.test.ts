@@ -95,8 +95,16 @@ describe('the word lists are the compilers\' own', () => {
     const s5 = read('backend/nasaq/lang/scl/typecheck/signatures.py');
     const conversions = read('backend/nasaq/lang/scl/typecheck/types.py');
     const library = read('backend/nasaq/lang/iec_library.py');
+    const texts = read('backend/nasaq/lang/text_instructions.py');
+    const numberText = read('backend/nasaq/lang/number_text.py');
+    const instructions = read('backend/nasaq/lang/scl/typecheck/instructions.py');
+    const variant = read('backend/nasaq/lang/scl/typecheck/variant.py');
     const standard = [
+      ...pythonSet(variant, 'NAMES'),
       ...pythonSet(calls, 'REAL_FUNCTIONS'),
+      ...pythonDict(texts, 'OVERLOADS').map(([key]) => key), // VAL_STRG, STRG_VAL
+      ...pythonDict(numberText, 'CHARACTER_CONVERSIONS').map(([key]) => key),
+      ...pythonDict(instructions, 'DTL_CONVERSIONS').map(([key]) => key),
       ...pythonDict(calls, 'FIXED_RESULTS').map(([key]) => key),
       ...pythonSet(calls, 'STRING_RESULTS'),
       ...pythonSet(calls, 'SAME_AS_INPUT'),

@@ -31,7 +31,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from nasaq.cpu import iec_blocks
+from nasaq.cpu import iec_blocks, tia_comm, tia_control
 from nasaq.cpu.clock import Clock
 from nasaq.cpu.errors import CpuError, CpuStopError, location
 from nasaq.cpu.memory import read_bytes, write_bytes
@@ -202,6 +202,7 @@ class Calls:
         self.clock = Clock()  # the time of day SFC 1 READ_CLK reads (``nasaq.cpu.clock``)
         self._db_ids: dict[int, int] | None = None
         self._system_fbs: dict[int, Compiled] = {}  # SFB 0-5, made at their first call
+        self.comm = tia_comm.Session()  # this CPU's connections and data logs
 
     # -- entry from generated code --------------------------------------------------------------
     def call(
@@ -371,6 +372,9 @@ class Calls:
             type_code = ANY_TYPES.get(found["type"].upper(), 2) if found else 2
             count = int(found["count"]) if found else 1
             pointer = actual.pattern & 0xFFFFFFFF
+            if pointer >> 24 == 0x85:  # the caller's instance: its DB, from AR2's offset on
+                address = (pointer & 0x7FFFF) + (self.m.ar2 & 0x7FFFF)
+                number, pointer = self.m.dino, 0x84000000 | address
         else:
             number, pointer = self._pointer_to(actual, site, frame, vframe, params)
             width = int(getattr(actual, "width", None) or 8)
@@ -815,7 +819,7 @@ class Calls:
         runs through ``_invoke`` like any FB call: instance, parameters in and out, registers."""
         found = self._system_fbs.get(number)
         if found is None:
-            body = iec_blocks.BODIES.get(number)
+            body = iec_blocks.BODIES.get(number) or self.comm.bodies.get(number)
             if body is None:
                 return None
             found = self._system_fbs[number] = self._python_fb(number, body)
@@ -845,8 +849,29 @@ class Calls:
     def _sfc(
         self, site: CallSite, number: int, frame: bytearray, vframe: bytearray, params: list[Ref]
     ) -> None:
+        if number in tia_control.SFC_BODIES:  # RUNTIME (``nasaq.cpu.tia_control``)
+            actuals = {
+                arg.name.upper(): self.locate(arg.value, frame, vframe, params, site.caller_slots)
+                for arg in site.args
+            }
+            self.m.br = tia_control.SFC_BODIES[number](actuals, self.m.now + self.tick_offset)
+            return
+        if number in tia_comm.SFC_BODIES:  # RD_SINFO, AG_SEND, AG_RECV (``cpu.tia_comm``)
+            refs: dict[str, Ref] = {}
+            for arg in site.args:
+                name = arg.name.upper()
+                if isinstance(arg.value, Constant):
+                    size = tia_comm.parameter_bytes(number, name)
+                    refs[name] = (bytearray(constant_bytes(arg.value, size)), 0, 0)
+                else:
+                    refs[name] = self.locate(arg.value, frame, vframe, params, site.caller_slots)
+            self.m.br = tia_comm.SFC_BODIES[number](self.comm, refs)
+            return
         if number == 46:  # STP
             raise CpuStopError("SIM502")
+        if number == 43:  # RE_TRIGR: the simulator's scan budget is not a cycle-time monitor
+            self.m.br = 1
+            return
         if number == 64:  # TIME_TCK: RET_VAL := ms since start, from the virtual clock
             for arg in site.args:
                 if arg.name.upper() == "RET_VAL":

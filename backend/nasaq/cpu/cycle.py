@@ -172,6 +172,7 @@ class Engine:
         self.first_scan = True
         self.cold_start = cold
         self.restart_clock_memory()
+        self.calls.comm.restart()  # a restart ends the connections (``cpu.tia_comm``)
         if self.loader.get(BlockKind.OB, 1) is None:
             self._diagnose(CpuError("SIM524"))  # information only: the cycles run no program
         self.m.lim = self.m.n + self._budget()
@@ -240,6 +241,7 @@ class Engine:
             frame[1] = (0x04 if self.cold_start else 0x01) if self.first_scan else 0x03
         elif event == EVENT_STARTUP:  # OB100_STRTUP: manual warm (16#81) or cold (16#85) restart
             frame[1] = 0x85 if self.cold_start else 0x81
+        self.calls.comm.ob_started(frame, event == EVENT_STARTUP)  # RD_SINFO reads it
         m.depth, m.lstack, m.priority = 1, len(frame), priority
         m.fc = m.orb = m.os = 0
         m.sta = 1

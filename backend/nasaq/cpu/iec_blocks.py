@@ -54,7 +54,8 @@ from collections.abc import Callable
 from nasaq.ir import Variable
 from nasaq.lang.layout import Layout, variables
 from nasaq.lang.system_blocks import F_TRIG_SFB, R_TRIG_SFB, SFB_INTERFACES, SFB_NAMES
-from nasaq.lang.types import Field, elementary
+from nasaq.lang.system_types import fields, system_fb_sections
+from nasaq.lang.types import BlockType, Field
 
 Body = Callable[[bytearray, int, int], int]
 
@@ -65,13 +66,13 @@ NAMES: dict[int, str] = SFB_NAMES
 
 def _layout(number: int) -> tuple[list[Variable], int]:
     """The instance variables of SFB ``number`` and the instance size in bytes."""
-    sections: dict[str, list[Field]] = {}
-    for section, name, type_name in SFB_INTERFACES[number]:
-        found = elementary(type_name)
-        assert found is not None, type_name
-        sections.setdefault(section, []).append(Field(name, found))
-    slots, bits = Layout(lambda _block: None).instance(list(sections.items()))
+    slots, bits = Layout(_expand).instance(fields(SFB_INTERFACES[number]))
     return variables(slots), bits // 8
+
+
+def _expand(block: BlockType) -> list[tuple[str, list[Field]]] | None:
+    """A system FB inside a system FB's instance (an IEC_TIMER member): its sections."""
+    return system_fb_sections(block.number) if block.kind == "SFB" else None
 
 
 _LAYOUTS = {number: _layout(number) for number in NAMES}
@@ -89,12 +90,8 @@ def _at(number: int, *names: str) -> tuple[int, ...]:
     )
 
 
-_I16 = struct.Struct(">h")
-_I32 = struct.Struct(">i")
 _U32 = struct.Struct(">I")
-_get_int, _put_int = _I16.unpack_from, _I16.pack_into
-_get_dint, _put_dint = _I32.unpack_from, _I32.pack_into
-_get_time, _put_time = _U32.unpack_from, _U32.pack_into
+_get_time, _put_time = _U32.unpack_from, _U32.pack_into  # STIME, ATIME: the system time
 
 
 def _bit(buf: bytearray, base: int, address: int) -> int:
@@ -106,73 +103,104 @@ def _set(buf: bytearray, base: int, address: int, value: int) -> None:
     buf[byte] = buf[byte] | mask if value else buf[byte] & ~mask
 
 
-# -- counters -------------------------------------------------------------------------------------
-_CTU_CU, _CTU_R, _CTU_PV, _CTU_Q, _CTU_CV, _CTU_CUO = _at(0, "CU", "R", "PV", "Q", "CV", "CUO")
-_CTD_CD, _CTD_LOAD, _CTD_PV, _CTD_Q, _CTD_CV, _CTD_CDO = _at(
-    1, "CD", "LOAD", "PV", "Q", "CV", "CDO"
-)
-(_UD_CU, _UD_CD, _UD_R, _UD_LOAD, _UD_PV, _UD_QU, _UD_QD, _UD_CV, _UD_CUO, _UD_CDO) = _at(
-    2, "CU", "CD", "R", "LOAD", "PV", "QU", "QD", "CV", "CUO", "CDO"
-)
+# -- counters and timers: one body per instruction, made for a layout and a value type -------------
+# SFB 0-5 (INT counters, TIME timers) and TIA Portal's typed counters and LTIME timers
+# (``nasaq.cpu.tia_iec``) are the same operations on other widths, so both are made here.
+
+_VALUE_FORMATS = {
+    "SINT": ">b",
+    "USINT": ">B",
+    "INT": ">h",
+    "UINT": ">H",
+    "DINT": ">i",
+    "UDINT": ">I",
+    "LINT": ">q",
+    "ULINT": ">Q",
+}
 
 
-def ctu(buf: bytearray, base: int, now: int) -> int:
-    """SFB 0 CTU: count up on a rising edge of CU; R resets (and wins)."""
-    cu = _bit(buf, base, _CTU_CU)
-    edge = cu and not _bit(buf, base, _CTU_CUO)
-    _set(buf, base, _CTU_CUO, cu)
-    cv = _get_int(buf, base + _CTU_CV)[0]
-    if _bit(buf, base, _CTU_R):
-        cv = 0
-    elif edge and cv < 32767:
-        cv += 1
-    _put_int(buf, base + _CTU_CV, cv)
-    _set(buf, base, _CTU_Q, cv >= _get_int(buf, base + _CTU_PV)[0])
-    return 1
+def _offsets(number: int) -> dict[str, int]:
+    """Member offsets of SFB ``number``: BOOLs as bit addresses, others as bytes."""
+    return {
+        v.name: v.offset_bits if v.type == "BOOL" else v.offset_bits // 8
+        for v in INTERFACES[number]
+    }
 
 
-def ctd(buf: bytearray, base: int, now: int) -> int:
-    """SFB 1 CTD: count down on a rising edge of CD; LOAD presets CV to PV (and wins)."""
-    cd = _bit(buf, base, _CTD_CD)
-    edge = cd and not _bit(buf, base, _CTD_CDO)
-    _set(buf, base, _CTD_CDO, cd)
-    cv = _get_int(buf, base + _CTD_CV)[0]
-    if _bit(buf, base, _CTD_LOAD):
-        cv = _get_int(buf, base + _CTD_PV)[0]
-    elif edge and cv > -32768:
-        cv -= 1
-    _put_int(buf, base + _CTD_CV, cv)
-    _set(buf, base, _CTD_Q, cv <= 0)
-    return 1
+def counter(number: int, instruction: str, kind: str, load: str = "LD") -> Body:
+    """The body of counter SFB ``number`` (``CTU``, ``CTD`` or ``CTUD``) counting in ``kind``
+    within its range; ``load`` names the preset input (SFB 1/2: LOAD, TIA's: LD)."""
+    at = _offsets(number)
+    value = struct.Struct(_VALUE_FORMATS[kind])
+    bits = value.size * 8
+    low, high = (
+        (0, (1 << bits) - 1) if kind.startswith("U") else (-(1 << bits - 1), (1 << bits - 1) - 1)
+    )
+    get, put = value.unpack_from, value.pack_into
+    cv_at, pv_at = at["CV"], at["PV"]
+    if instruction == "CTU":
+        cu, r, q, cuo = at["CU"], at["R"], at["Q"], at["CUO"]
 
+        def ctu(buf: bytearray, base: int, now: int) -> int:
+            """Count up on a rising edge of CU; R resets (and wins)."""
+            up = _bit(buf, base, cu)
+            edge = up and not _bit(buf, base, cuo)
+            _set(buf, base, cuo, up)
+            cv = get(buf, base + cv_at)[0]
+            if _bit(buf, base, r):
+                cv = 0
+            elif edge and cv < high:
+                cv += 1
+            put(buf, base + cv_at, cv)
+            _set(buf, base, q, cv >= get(buf, base + pv_at)[0])
+            return 1
 
-def ctud(buf: bytearray, base: int, now: int) -> int:
-    """SFB 2 CTUD: R before LOAD before counting; edges at CU and CD together cancel."""
-    cu, cd = _bit(buf, base, _UD_CU), _bit(buf, base, _UD_CD)
-    up = cu and not _bit(buf, base, _UD_CUO)
-    down = cd and not _bit(buf, base, _UD_CDO)
-    _set(buf, base, _UD_CUO, cu)
-    _set(buf, base, _UD_CDO, cd)
-    cv = _get_int(buf, base + _UD_CV)[0]
-    pv = _get_int(buf, base + _UD_PV)[0]
-    if _bit(buf, base, _UD_R):
-        cv = 0
-    elif _bit(buf, base, _UD_LOAD):
-        cv = pv
-    elif up and not down and cv < 32767:
-        cv += 1
-    elif down and not up and cv > -32768:
-        cv -= 1
-    _put_int(buf, base + _UD_CV, cv)
-    _set(buf, base, _UD_QU, cv >= pv)
-    _set(buf, base, _UD_QD, cv <= 0)
-    return 1
+        return ctu
+    if instruction == "CTD":
+        cd, ld, q, cdo = at["CD"], at[load], at["Q"], at["CDO"]
 
+        def ctd(buf: bytearray, base: int, now: int) -> int:
+            """Count down on a rising edge of CD; the load input presets CV to PV (and wins)."""
+            down = _bit(buf, base, cd)
+            edge = down and not _bit(buf, base, cdo)
+            _set(buf, base, cdo, down)
+            cv = get(buf, base + cv_at)[0]
+            if _bit(buf, base, ld):
+                cv = get(buf, base + pv_at)[0]
+            elif edge and cv > low:
+                cv -= 1
+            put(buf, base + cv_at, cv)
+            _set(buf, base, q, cv <= 0)
+            return 1
 
-# -- timers (TP, TON and TOF share one layout) ----------------------------------------------------
-_TIMER_MEMBERS = ("IN", "PT", "Q", "ET", "STATE", "STIME", "ATIME")
-_IN, _PT, _Q, _ET, _STATE, _STIME, _ATIME = _at(4, *_TIMER_MEMBERS)
-assert _at(3, *_TIMER_MEMBERS) == _at(5, *_TIMER_MEMBERS) == _at(4, *_TIMER_MEMBERS)
+        return ctd
+    cu, cd, r, ld = at["CU"], at["CD"], at["R"], at[load]
+    qu, qd, cuo, cdo = at["QU"], at["QD"], at["CUO"], at["CDO"]
+
+    def ctud(buf: bytearray, base: int, now: int) -> int:
+        """R before the load input before counting; edges at CU and CD together cancel."""
+        up_in, down_in = _bit(buf, base, cu), _bit(buf, base, cd)
+        up = up_in and not _bit(buf, base, cuo)
+        down = down_in and not _bit(buf, base, cdo)
+        _set(buf, base, cuo, up_in)
+        _set(buf, base, cdo, down_in)
+        cv = get(buf, base + cv_at)[0]
+        pv = get(buf, base + pv_at)[0]
+        if _bit(buf, base, r):
+            cv = 0
+        elif _bit(buf, base, ld):
+            cv = pv
+        elif up and not down and cv < high:
+            cv += 1
+        elif down and not up and cv > low:
+            cv -= 1
+        put(buf, base + cv_at, cv)
+        _set(buf, base, qu, cv >= pv)
+        _set(buf, base, qd, cv <= 0)
+        return 1
+
+    return ctud
+
 
 RUNNING = 0x01  # TP, TON: the time is running
 EXPIRED = 0x02  # TP, TON: the time has expired, the outputs hold until IN is 0
@@ -180,93 +208,108 @@ PREV_IN = 0x01  # TOF: IN was 1 at the previous call
 DELAYING = 0x02  # TOF: the off delay is running
 
 
-def _reset(buf: bytearray, base: int, pt: int) -> int:
-    """PT <= 0: Q = 0, ET = 0, STATE = 0; PT = 0 also clears IN (the initialising call), a
-    negative PT is an error (BR = 0)."""
-    if pt == 0:
-        _set(buf, base, _IN, 0)
-    _set(buf, base, _Q, 0)
-    _put_dint(buf, base + _ET, 0)
-    buf[base + _STATE] = 0
-    return 1 if pt == 0 else 0
+def timer(number: int, instruction: str, span: str = ">i", unit: int = 1) -> Body:
+    """The body of timer SFB ``number`` (``TP``, ``TON`` or ``TOF``): PT and ET packed as
+    ``span`` (TIME: a DINT of ms; LTIME: a LINT of ns), ``unit`` of them per ms of the system
+    time, which STIME and ATIME keep."""
+    at = _offsets(number)
+    get, put = struct.Struct(span).unpack_from, struct.Struct(span).pack_into
+    in_, pt_at, q, et_at = at["IN"], at["PT"], at["Q"], at["ET"]
+    state_at, stime, atime = at["STATE"], at["STIME"], at["ATIME"]
 
+    def reset(buf: bytearray, base: int, pt: int) -> int:
+        """PT <= 0: Q = 0, ET = 0, STATE = 0; PT = 0 also clears IN (the initialising call), a
+        negative PT is an error (BR = 0)."""
+        if pt == 0:
+            _set(buf, base, in_, 0)
+        _set(buf, base, q, 0)
+        put(buf, base + et_at, 0)
+        buf[base + state_at] = 0
+        return 1 if pt == 0 else 0
 
-def _elapsed(buf: bytearray, base: int, now: int) -> int:
-    """Time since STIME, across the wrap of the system time; ATIME := now."""
-    _put_time(buf, base + _ATIME, now)
-    start: int = _get_time(buf, base + _STIME)[0]
-    return (now - start) & TIME_MASK
+    def elapsed(buf: bytearray, base: int, now: int) -> int:
+        """Time since STIME, across the wrap of the system time; ATIME := now."""
+        _put_time(buf, base + atime, now)
+        begun: int = _get_time(buf, base + stime)[0]
+        return ((now - begun) & TIME_MASK) * unit
 
-
-def tp(buf: bytearray, base: int, now: int) -> int:
-    """SFB 3 TP: a pulse of length PT on a rising edge of IN, not retriggerable."""
-    pt = _get_dint(buf, base + _PT)[0]
-    if pt <= 0:
-        return _reset(buf, base, pt)
-    state = buf[base + _STATE]
-    on = _bit(buf, base, _IN)
-    if on and not state & (RUNNING | EXPIRED):
-        _put_time(buf, base + _STIME, now)
-        state = RUNNING
-    if state & RUNNING:
-        et = _elapsed(buf, base, now)
-        if et >= pt:
-            et, state = pt, EXPIRED
-        _set(buf, base, _Q, state & RUNNING)
-        _put_dint(buf, base + _ET, et)
-    if not on and state & EXPIRED:
-        state = 0
-        _put_dint(buf, base + _ET, 0)
-    buf[base + _STATE] = state
-    return 1
-
-
-def ton(buf: bytearray, base: int, now: int) -> int:
-    """SFB 4 TON: Q after IN has been 1 for PT; IN = 0 resets."""
-    pt = _get_dint(buf, base + _PT)[0]
-    if pt <= 0:
-        return _reset(buf, base, pt)
-    state = buf[base + _STATE]
-    if _bit(buf, base, _IN):
-        if not state & (RUNNING | EXPIRED):
-            _put_time(buf, base + _STIME, now)
+    def tp(buf: bytearray, base: int, now: int) -> int:
+        """A pulse of length PT on a rising edge of IN, not retriggerable."""
+        pt = get(buf, base + pt_at)[0]
+        if pt <= 0:
+            return reset(buf, base, pt)
+        state = buf[base + state_at]
+        on = _bit(buf, base, in_)
+        if on and not state & (RUNNING | EXPIRED):
+            _put_time(buf, base + stime, now)
             state = RUNNING
         if state & RUNNING:
-            et = _elapsed(buf, base, now)
+            et = elapsed(buf, base, now)
             if et >= pt:
                 et, state = pt, EXPIRED
-            _set(buf, base, _Q, state & EXPIRED)
-            _put_dint(buf, base + _ET, et)
-    else:
-        state = 0
-        _set(buf, base, _Q, 0)
-        _put_dint(buf, base + _ET, 0)
-    buf[base + _STATE] = state
-    return 1
+            _set(buf, base, q, state & RUNNING)
+            put(buf, base + et_at, et)
+        if not on and state & EXPIRED:
+            state = 0
+            put(buf, base + et_at, 0)
+        buf[base + state_at] = state
+        return 1
+
+    def ton(buf: bytearray, base: int, now: int) -> int:
+        """Q after IN has been 1 for PT; IN = 0 resets."""
+        pt = get(buf, base + pt_at)[0]
+        if pt <= 0:
+            return reset(buf, base, pt)
+        state = buf[base + state_at]
+        if _bit(buf, base, in_):
+            if not state & (RUNNING | EXPIRED):
+                _put_time(buf, base + stime, now)
+                state = RUNNING
+            if state & RUNNING:
+                et = elapsed(buf, base, now)
+                if et >= pt:
+                    et, state = pt, EXPIRED
+                _set(buf, base, q, state & EXPIRED)
+                put(buf, base + et_at, et)
+        else:
+            state = 0
+            _set(buf, base, q, 0)
+            put(buf, base + et_at, 0)
+        buf[base + state_at] = state
+        return 1
+
+    def tof(buf: bytearray, base: int, now: int) -> int:
+        """Q = 1 while IN, falls PT after IN falls; IN = 1 resets the delay."""
+        pt = get(buf, base + pt_at)[0]
+        if pt <= 0:
+            return reset(buf, base, pt)
+        state = buf[base + state_at]
+        if _bit(buf, base, in_):
+            state = PREV_IN
+            _set(buf, base, q, 1)
+            put(buf, base + et_at, 0)
+        else:
+            if state & PREV_IN:  # falling edge: the delay starts
+                _put_time(buf, base + stime, now)
+                state = DELAYING
+            if state & DELAYING:
+                et = elapsed(buf, base, now)
+                if et >= pt:
+                    et, state = pt, 0
+                _set(buf, base, q, state & DELAYING)
+                put(buf, base + et_at, et)
+        buf[base + state_at] = state
+        return 1
+
+    return {"TP": tp, "TON": ton, "TOF": tof}[instruction]
 
 
-def tof(buf: bytearray, base: int, now: int) -> int:
-    """SFB 5 TOF: Q = 1 while IN, falls PT after IN falls; IN = 1 resets the delay."""
-    pt = _get_dint(buf, base + _PT)[0]
-    if pt <= 0:
-        return _reset(buf, base, pt)
-    state = buf[base + _STATE]
-    if _bit(buf, base, _IN):
-        state = PREV_IN
-        _set(buf, base, _Q, 1)
-        _put_dint(buf, base + _ET, 0)
-    else:
-        if state & PREV_IN:  # falling edge: the delay starts
-            _put_time(buf, base + _STIME, now)
-            state = DELAYING
-        if state & DELAYING:
-            et = _elapsed(buf, base, now)
-            if et >= pt:
-                et, state = pt, 0
-            _set(buf, base, _Q, state & DELAYING)
-            _put_dint(buf, base + _ET, et)
-    buf[base + _STATE] = state
-    return 1
+ctu = counter(0, "CTU", "INT")  # SFB 0
+ctd = counter(1, "CTD", "INT", load="LOAD")  # SFB 1
+ctud = counter(2, "CTUD", "INT", load="LOAD")  # SFB 2
+tp = timer(3, "TP")  # SFB 3
+ton = timer(4, "TON")  # SFB 4
+tof = timer(5, "TOF")  # SFB 5
 
 
 # -- edge detectors (IEC 61131-3 R_TRIG and F_TRIG) ----------------------------------------------
@@ -299,3 +342,15 @@ BODIES: dict[int, Body] = {
     R_TRIG_SFB: r_trig,
     F_TRIG_SFB: f_trig,
 }
+
+# -- merge points: each module that brings system block bodies adds its line here (it imports
+# INTERFACES and Body from this module, which the package loads first) -----------------------------
+from nasaq.cpu import tia_control  # noqa: E402  (sysfb: PID_Compact, CTRL_HSC)
+
+BODIES.update(tia_control.BODIES)
+from nasaq.cpu import tia_iec  # noqa: E402  (longs: CTU_DINT ..., TON_LTIME ...)
+
+BODIES.update(tia_iec.BODIES)
+from nasaq.cpu import tia_filters  # noqa: E402  (filters: Filter_PT1, Filter_DT1, Filter_PT2)
+
+BODIES.update(tia_filters.BODIES)

@@ -64,8 +64,10 @@ import struct
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
+from nasaq.cpu.character_arrays import BODIES as REACHING
 from nasaq.cpu.errors import CpuError
 from nasaq.cpu.long_library import BODIES as LONG_BODIES
+from nasaq.cpu.text_instructions import bodies as text_bodies
 from nasaq.ir import Block, BlockKind
 from nasaq.lang.iec_library import FAMILY, FUNCTIONS, WIDE
 from nasaq.lang.number_text import TIME_CONVERSIONS
@@ -74,6 +76,7 @@ from nasaq.lang.s7_1500_types import INTEGER_RANGES
 if TYPE_CHECKING:
     from nasaq.cpu.codegen.compiler import Compiled
     from nasaq.cpu.machine import Machine
+    from nasaq.cpu.memory import Memory
 
 Ref = tuple[Any, int, int]
 Body = Callable[[list[Ref]], int]  # the parameter references in interface order -> BR
@@ -322,8 +325,9 @@ def _r_strng(p: list[Ref]) -> int:
     return 1
 
 
-# TIA Portal's INT_TO_STRING ... (``nasaq.lang.number_text``): S_CONV's format, the number
-# right-justified in a field of the type's width, blanks before it, no "+" (a REAL has one).
+# TIA Portal's INT_TO_STRING ... (``nasaq.lang.number_text``) as its help's table "Explicit
+# conversion of INT" says for SCL: no blanks inserted, the number preceded by its sign ("+42",
+# "-42"; S_CONV/VAL_STRG in LAD/FBD pad and leave the "+" out). A REAL has its 14 characters.
 _FIELDS = {"SINT": (1, 4), "USINT": (1, 4), "INT": (2, 6), "UINT": (2, 6), "DINT": (4, 11)}
 _FIELDS |= {"UDINT": (4, 11), "LINT": (8, 21), "ULINT": (8, 21)}  # (bytes, characters)
 _TIA_NUMBER = re.compile(rb"\s*([+-]?[0-9]+)")
@@ -331,12 +335,12 @@ _TIA_REAL = re.compile(rb"\s*([+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]
 
 
 def _tia_text(kind: str) -> Body:
-    size, width = _FIELDS[kind]
+    size, _characters = _FIELDS[kind]
     signed = not kind.startswith("U")
 
     def body(p: list[Ref]) -> int:
         value = int.from_bytes(_bytes(p[0], size), "big", signed=signed)
-        return _put_text(p[1], f"{value:>{width}d}".encode())
+        return _put_text(p[1], f"{value:+d}".encode())
 
     return body
 
@@ -583,7 +587,9 @@ BODIES: dict[str, Body] = {
     **{f"{op}_DT": _dt_compare(_ordered(op)) for op in ("EQ", "NE", "GT", "GE", "LT", "LE")},
 }
 BODIES.update(LONG_BODIES)  # the S7-1200/1500 types' hidden FCs (``nasaq.cpu.long_library``)
-assert BODIES.keys() == FUNCTIONS.keys()
+BODIES.update(text_bodies(BODIES))  # INT_TO_WSTRING, VAL_STRG ... (``nasaq.cpu.text_instructions``)
+# ATH, Strg_TO_Chars ... reach their VARIANTs through the memory (``nasaq.cpu.character_arrays``)
+assert BODIES.keys() | REACHING.keys() == FUNCTIONS.keys()
 
 
 def library_name(block: Block) -> str | None:
@@ -593,21 +599,29 @@ def library_name(block: Block) -> str | None:
     if block.attributes.get("FAMILY", "").upper() != FAMILY:
         return None
     name = (block.attributes.get("NAME") or block.name).upper()
-    return name if name in BODIES else None
+    return name if name in BODIES or name in REACHING else None
 
 
-def compiled(block: Block) -> Compiled | None:
-    """The library FC ``block`` with its Python body; None when it is no library block."""
+def compiled(block: Block, memory: Memory) -> Compiled | None:
+    """The library FC ``block`` with its Python body; None when it is no library block.
+    ``memory``: the CPU's, for the bodies that follow an ANY (``REACHING``)."""
     name = library_name(block)
     if name is None:
         return None
     from nasaq.cpu.codegen.compiler import Compiled  # codegen imports the call module
 
-    body = BODIES[name]
     slots = [v.name for v in block.interface if v.section in ("IN", "OUT", "IN_OUT", "RETURN")]
+    reaching = REACHING.get(name)
+    if reaching is not None:
 
-    def run(m: Machine, callee_frame: bytearray, frame: bytearray, params: list[Ref]) -> None:
-        m.br = body(params)
+        def run(m: Machine, callee_frame: bytearray, frame: bytearray, params: list[Ref]) -> None:
+            m.br = reaching(params, memory, frame)  # (``frame``: the caller's, the V area)
+
+    else:
+        body = BODIES[name]
+
+        def run(m: Machine, callee_frame: bytearray, frame: bytearray, params: list[Ref]) -> None:
+            m.br = body(params)
 
     label = f"<FC {block.number} {name}>"
     return Compiled(block, run, 0, slots, [], [], {}, label, "", {})

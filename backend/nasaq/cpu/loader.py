@@ -103,7 +103,7 @@ class Loader:
         block = self.program.get(kind, number)
         compiled = None
         if block is not None and kind in CODE_KINDS:
-            compiled = iec_library.compiled(block)  # an IEC library FC: its body is Python
+            compiled = iec_library.compiled(block, self.calls.memory)  # a Python body
             if compiled is None:
                 compiled = compile_block(block, self.program, self.profile, self.bind)
                 self._link(compiled)

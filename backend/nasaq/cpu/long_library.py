@@ -27,11 +27,11 @@ Semantics (S7-1200/1500; where the manuals leave it open, the choice is marked *
 from __future__ import annotations
 
 import math
-import struct
 from collections.abc import Callable
 from typing import Any
 
 from nasaq.cpu.errors import CpuError
+from nasaq.cpu.realnum import bits_of, float_of, ieee
 from nasaq.lang.long_library import ARITHMETIC, COMPARE, OPERATION_TYPES
 from nasaq.lang.s7_1500_types import CONVERSIONS, INTEGER_RANGES
 
@@ -58,7 +58,7 @@ _FORMS: dict[str, tuple[int, bool, str]] = {
     "LREAL": (8, True, "f"),
 }
 _BITS = frozenset({"BYTE", "WORD", "DWORD", "LWORD"})
-_FLOAT = {4: struct.Struct(">f"), 8: struct.Struct(">d")}
+_SIGNS = {"ADD": "+", "SUB": "-", "MUL": "*", "DIV": "/"}
 _NS_PER_MS = 1_000_000
 
 
@@ -67,10 +67,8 @@ def _get(ref: Ref, kind: str) -> int | float:
     buf, byte, _bit = ref
     if buf is None or byte < 0 or byte + size > len(buf):
         raise CpuError("SIM503", address=f"byte {byte} (parameter)")
-    data = bytes(buf[byte : byte + size])
-    if form == "f":
-        return float(_FLOAT[size].unpack(data)[0])
-    return int.from_bytes(data, "big", signed=signed)
+    value = int.from_bytes(buf[byte : byte + size], "big", signed=signed and form == "i")
+    return float_of(value, size) if form == "f" else value
 
 
 def _set(ref: Ref, kind: str, value: int | float) -> None:
@@ -78,11 +76,8 @@ def _set(ref: Ref, kind: str, value: int | float) -> None:
     buf, byte, _bit = ref
     if buf is None or byte < 0 or byte + size > len(buf):
         raise CpuError("SIM504", address=f"byte {byte} (parameter)")
-    if form == "f":
-        data = _FLOAT[size].pack(value)
-    else:
-        data = (int(value) & ((1 << 8 * size) - 1)).to_bytes(size, "big")
-    buf[byte : byte + size] = data
+    bits = bits_of(value, size) if form == "f" else int(value) & ((1 << 8 * size) - 1)
+    buf[byte : byte + size] = bits.to_bytes(size, "big")
 
 
 def _set_bool(ref: Ref, value: bool) -> None:
@@ -141,26 +136,9 @@ def _integer(op: str, kind: str, right_kind: str | None = None) -> Body:
 
 def _real(op: str) -> Body:
     def body(p: list[Ref]) -> int:
-        a, b = float(_get(p[0], "LREAL")), float(_get(p[1], "LREAL"))
-        ok = 1
-        if op == "ADD":
-            value = a + b
-        elif op == "SUB":
-            value = a - b
-        elif op == "MUL":
-            value = a * b
-        elif b == 0.0:
-            value = (
-                math.nan
-                if a == 0.0 or math.isnan(a)
-                else math.copysign(math.inf, a) * (math.copysign(1.0, b))
-            )
-            ok = 0
-        else:
-            value = a / b
-        ok = ok if math.isfinite(value) else 0
+        value = ieee(_SIGNS[op], float(_get(p[0], "LREAL")), float(_get(p[1], "LREAL")))
         _set(p[2], "LREAL", value)
-        return ok
+        return int(math.isfinite(value))
 
     return body
 
@@ -217,19 +195,15 @@ def _fits(kind: str, value: int) -> bool:
 
 def _to_float(kind: str, value: float) -> tuple[float, int]:
     if kind == "REAL":
-        try:
-            return float(_FLOAT[4].unpack(_FLOAT[4].pack(value))[0]), 1
-        except OverflowError:
-            return math.copysign(math.inf, value), 0
+        single = float_of(bits_of(value, 4), 4)
+        return single, 0 if math.isinf(single) and not math.isinf(value) else 1
     return float(value), 1
 
 
 def _pattern(kind: str, value: int | float) -> int:
     """The bits of ``value`` (a float's IEEE pattern, a signed value sign-extended)."""
     size, _signed, form = _FORMS[kind]
-    if form == "f":
-        return int.from_bytes(_FLOAT[size].pack(value), "big")
-    return int(value)
+    return bits_of(value, size) if form == "f" else int(value)
 
 
 def _convert(source: str, target: str) -> Body:
@@ -248,7 +222,7 @@ def _convert(source: str, target: str) -> Body:
         elif source in _BITS or target in _BITS:
             if form_out == "f":  # a bit string's pattern as a REAL/LREAL
                 bits = _pattern(source, value) & ((1 << 8 * size_out) - 1)
-                result = float(_FLOAT[size_out].unpack(bits.to_bytes(size_out, "big"))[0])
+                result = float_of(bits, size_out)
             else:
                 result = _wrap(target, _pattern(source, value))
         elif form_out == "f":

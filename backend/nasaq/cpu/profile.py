@@ -9,7 +9,7 @@ enum (``Profile("S7-300")`` works, as in scenario files) whose members expose th
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import Enum
 
 
@@ -52,23 +52,18 @@ _SPECS: dict[str, ProfileSpec] = {
         pq_updates_piq=False,
         ns_per_instruction=50,
     ),
-    # CPU 1516-3 PN/DP: 32 KB I/O address space (process images as large), 16 KB bit memory,
-    # 2048 S7 timers and counters, 24 nested blocks, 64 KB local data per priority class
-    # (rounded from the data sheet's per-class figure), 10 ns per bit instruction. Its STL
-    # emulates four accumulators, and T PQ does not write the process image there.
-    "S7-1500": ProfileSpec(
-        accumulators=4,
-        process_image_bytes=32768,
-        peripheral_bytes=32768,
-        marker_bytes=16384,
-        timers=2048,
-        counters=2048,
-        nesting_depth=24,
-        lstack_bytes=65536,
-        pq_updates_piq=False,
-        ns_per_instruction=10,
-    ),
 }
+# CPU 1516-3 PN/DP, an S7-400 in what STL sees (four accumulators, T PQ does not write the
+# process image, its timers, counters, bit memory and nesting depth) with a 32 KB I/O address
+# space (process images as large), 64 KB local data per priority class (rounded from the data
+# sheet's per-class figure) and 10 ns per bit instruction.
+_SPECS["S7-1500"] = replace(
+    _SPECS["S7-400"],
+    process_image_bytes=32768,
+    peripheral_bytes=32768,
+    lstack_bytes=65536,
+    ns_per_instruction=10,
+)
 
 
 class Profile(Enum):

@@ -14,6 +14,8 @@ import struct
 
 _F = struct.Struct(">f")
 _U = struct.Struct(">I")
+_D = struct.Struct(">d")  # LREAL (S7-1200/1500): an IEEE 754 double
+_Q = struct.Struct(">Q")
 NAN_BITS = 0xFFFFFFFF  # an S7 CPU delivers every NaN result as 16#FFFF_FFFF
 MIN_NORMAL = 1.1754943508222875e-38
 
@@ -31,6 +33,42 @@ def to_bits(value: float) -> int:
     except OverflowError:
         return 0x7F800000 if value > 0 else 0xFF800000
     return bits
+
+
+def float_of(bits: int, size: int) -> float:
+    """The REAL (``size`` 4) or LREAL (8) with the bit pattern ``bits``."""
+    if size == 4:
+        return to_float(bits)
+    value: float = _D.unpack(_Q.pack(bits & 0xFFFFFFFFFFFFFFFF))[0]
+    return value
+
+
+def bits_of(value: float, size: int) -> int:
+    """The bit pattern of ``value`` as a REAL (``size`` 4: rounded to single, NaN as the CPU
+    gives it, beyond the range infinity) or an LREAL (8)."""
+    if size == 4:
+        return to_bits(value)
+    bits: int = _Q.unpack(_D.pack(value))[0]
+    return bits
+
+
+def ieee(op: str, x: float, y: float) -> float:
+    """``x op y`` (``+ - * /``) in doubles, a division by zero as IEEE 754 has it (±infinity,
+    NaN for 0/0)."""
+    try:
+        if op == "+":
+            return x + y
+        if op == "-":
+            return x - y
+        if op == "*":
+            return x * y
+        if y == 0.0:
+            if x == 0.0 or x != x:
+                return math.nan
+            return math.copysign(math.inf, x) * math.copysign(1.0, y)
+        return x / y
+    except OverflowError:
+        return math.inf
 
 
 def status(bits: int) -> tuple[int, int, int, int]:
@@ -59,25 +97,7 @@ def result(value: float, os: int) -> tuple[int, int, int, int, int]:
 
 
 def arith(op: str, a2: int, a1: int, os: int) -> tuple[int, int, int, int, int]:
-    x, y = to_float(a2), to_float(a1)
-    try:
-        if op == "+":
-            value = x + y
-        elif op == "-":
-            value = x - y
-        elif op == "*":
-            value = x * y
-        elif y == 0.0:
-            value = (
-                math.nan
-                if x == 0.0 or x != x
-                else math.copysign(math.inf, x) * math.copysign(1.0, y)
-            )
-        else:
-            value = x / y
-    except OverflowError:
-        value = math.inf
-    return result(value, os)
+    return result(ieee(op, to_float(a2), to_float(a1)), os)
 
 
 def _function(name: str, x: float) -> float:

@@ -39,13 +39,16 @@ FAMILY = "IEC"  # the FAMILY header property of the library blocks (as Siemens s
 
 @dataclass(frozen=True, slots=True)
 class LibraryFunction:
-    """``inputs``: (name, type) in interface order; ``result``: the type of RET_VAL."""
+    """``inputs``: (name, type) in interface order; ``result``: the type of RET_VAL;
+    ``others``: (section ``OUT``/``IN_OUT``, name, type) after the inputs (TIA's VAL_STRG ...,
+    ``nasaq.lang.text_instructions``; the IEC library's FCs have none)."""
 
     name: str
     number: int
     inputs: tuple[tuple[str, DataType], ...]
     result: DataType
     title: str
+    others: tuple[tuple[str, str, DataType], ...] = ()
 
 
 def _fc(
@@ -198,10 +201,13 @@ def function(name: str) -> LibraryFunction | None:
 def _with_long_library() -> None:
     """The hidden FCs of the S7-1200/1500 types (``nasaq.lang.long_library``) are library FCs
     too: added to the program when called, their bodies Python."""
+    from nasaq.lang.character_arrays import functions as character_arrays
     from nasaq.lang.long_library import functions
     from nasaq.lang.number_text import functions as number_text
+    from nasaq.lang.text_instructions import functions as text_instructions
 
-    for found in [*functions(), *number_text()]:  # and TIA's INT_TO_STRING ...
+    # and TIA's INT_TO_STRING ..., VAL_STRG, ATH ...
+    for found in [*functions(), *number_text(), *text_instructions(), *character_arrays()]:
         FUNCTIONS[found.name] = found
         BY_NUMBER[found.number] = found
 

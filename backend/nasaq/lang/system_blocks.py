@@ -73,9 +73,56 @@ SFB_INTERFACES: dict[int, list[tuple[str, str, str]]] = {
 }
 
 # The system functions the CPU runs (``nasaq.cpu.calls``): their names and parameters.
-SFC_NAMES: dict[int, str] = {1: "READ_CLK", 46: "STP", 64: "TIME_TCK"}
+SFC_NAMES: dict[int, str] = {1: "READ_CLK", 43: "RE_TRIGR", 46: "STP", 64: "TIME_TCK"}
 SFC_INTERFACES: dict[int, list[tuple[str, str, str]]] = {
     1: [("OUT", "RET_VAL", "INT"), ("OUT", "CDT", "DATE_AND_TIME")],
+    43: [],  # retrigger the cycle monitoring: nothing to do in the simulator (COMPATIBILITY.md)
     46: [],
     64: [("OUT", "RET_VAL", "TIME")],
 }
+
+# Nasaq's numbers from 1100 up are for instructions of the S7-1200/1500 family only.
+S7_1500_FROM = 1100
+
+
+def sfb_number(name: str) -> int | None:
+    """The SFB a system block's name (any case) stands for, None for other names."""
+    if len(_BY_NAME) != len(SFB_NAMES):  # filled at first use, after every merge below
+        _BY_NAME.update({n.upper(): number for number, n in SFB_NAMES.items()})
+    return _BY_NAME.get(name.upper())
+
+
+def s7_1500_only(number: int) -> bool:
+    """Whether SFB ``number`` exists on S7-1200/1500 CPUs only (SCL500 under S7-300/400)."""
+    return number >= S7_1500_FROM and number not in CLASSIC_TOO
+
+
+# Blocks numbered from 1100 that S7-300/400 have too (as library FBs: TCON FB 65 ...).
+CLASSIC_TOO: set[int] = set()
+
+
+_BY_NAME: dict[str, int] = {}
+
+# -- merge points: each module that brings system blocks adds its line here (no cycles: those
+# modules import neither this one nor ``system_types``) --------------------------------------------
+from nasaq.lang import tia_control  # noqa: E402  (sysfb: PID_Compact, CTRL_HSC)
+
+SFB_NAMES.update(tia_control.NAMES)
+SFB_INTERFACES.update(tia_control.INTERFACES)
+SFC_NAMES.update(tia_control.SFC_NAMES)
+SFC_INTERFACES.update(tia_control.SFC_INTERFACES)
+from nasaq.lang import tia_comm  # noqa: E402  (syscomm: TCON ..., GET/PUT, data logs, RD_SINFO)
+
+SFB_NAMES.update(tia_comm.NAMES)
+SFB_INTERFACES.update(tia_comm.INTERFACES)
+SFC_NAMES.update(tia_comm.SFC_NAMES)
+SFC_INTERFACES.update(tia_comm.SFC_INTERFACES)
+CLASSIC_TOO.update(tia_comm.CLASSIC)
+from nasaq.lang import tia_iec  # noqa: E402  (longs: CTU_DINT ..., TON_LTIME ...)
+
+SFB_NAMES.update(tia_iec.NAMES)
+SFB_INTERFACES.update(tia_iec.INTERFACES)
+from nasaq.lang import tia_filters  # noqa: E402  (filters: Filter_PT1, Filter_DT1, Filter_PT2)
+
+SFB_NAMES.update(tia_filters.NAMES)
+SFB_INTERFACES.update(tia_filters.INTERFACES)

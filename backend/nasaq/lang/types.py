@@ -112,7 +112,8 @@ def type_text(data_type: DataType) -> str:
         dims = ", ".join(f"{low}..{high}" for low, high in data_type.dims)
         return f"ARRAY[{dims}] OF {type_text(data_type.element)}"
     if isinstance(data_type, StructType):
-        return "STRUCT"
+        shown = getattr(data_type, "text", None)  # VARIANT, ARRAY[*] (``scl.descriptor``)
+        return shown if isinstance(shown, str) else "STRUCT"
     return f"{data_type.kind} {data_type.number}"
 
 

@@ -15,6 +15,7 @@ What is not simulated yet for them is ``SCL800`` (``what`` says which operation)
 
 from __future__ import annotations
 
+from nasaq.lang.number_text import WIDE_CONVERSIONS
 from nasaq.lang.types import StringType
 
 NAMES = ("WSTRING", "WCHAR")
@@ -30,7 +31,7 @@ def wide_text(name: str) -> str | None:
 
 # WCHAR to and from the other character and whole-number types: its code unit, zero-extended
 # (a code above 255 into a CHAR keeps its low byte, a number into a WCHAR its low word: *Nasaq*).
-_CODES = ("CHAR", "INT", "DINT", "UINT", "UDINT", "WORD", "DWORD")
+_CODES = ("CHAR", "BYTE", "USINT", "SINT", "INT", "DINT", "UINT", "UDINT", "WORD", "DWORD")
 WCHAR_CONVERSIONS = frozenset(
     [f"WCHAR_TO_{name}" for name in _CODES] + [f"{name}_TO_WCHAR" for name in _CODES]
 )
@@ -44,10 +45,10 @@ def wide_conversion(name: str) -> bool:
 
 def unsimulated_conversion(name: str) -> bool:
     """Whether ``name`` is a conversion to or from WCHAR/WSTRING Nasaq does not simulate yet
-    (``WCHAR_TO_WSTRING``, ``DINT_TO_WSTRING`` ...; STRING_TO_WSTRING and WSTRING_TO_STRING are
-    library FCs, ``nasaq.lang.iec_library``)."""
+    (``WCHAR_TO_WSTRING``, ``LREAL_TO_WSTRING`` ...; STRING_TO_WSTRING, WSTRING_TO_STRING and
+    the numbers' ``INT_TO_WSTRING`` ... are library FCs, ``nasaq.lang.number_text``)."""
     upper = name.upper()
-    if not wide_conversion(upper) or upper in WCHAR_CONVERSIONS:
+    if not wide_conversion(upper) or upper in WCHAR_CONVERSIONS or upper in WIDE_CONVERSIONS:
         return False
     return upper not in ("STRING_TO_WSTRING", "WSTRING_TO_STRING")
 

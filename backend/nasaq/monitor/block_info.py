@@ -50,9 +50,14 @@ class BlockInfo:
         home = "L" if direct.area is Area.L else "DI" if direct.area is Area.DI else None
         if home is None:
             return None
-        at = direct.byte * 8 + direct.bit
+        at, width = direct.byte * 8 + direct.bit, int(direct.width)
         for slot in self.slots:
-            if slot.home == home and slot.bit_offset == at and slot.bits == int(direct.width):
+            if slot.home != home:
+                continue
+            if slot.bit_offset == at and slot.bits == width:
+                return slot
+            # an 8-byte value moves as two doublewords: either half names the whole variable
+            if slot.bits == 64 and width == 32 and at in (slot.bit_offset, slot.bit_offset + 32):
                 return slot
         return None
 

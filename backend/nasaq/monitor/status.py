@@ -267,14 +267,20 @@ def reader_of(
     instance = _instance_slot(operand)
     if instance is not None:
         slot_of = info.slot_at(instance)
-        kind = slot_of.type if slot_of is not None else _type_of_width(int(instance.width))
-        relative = Slot("", kind, "DI", instance.byte * 8 + instance.bit, int(instance.width))
+        if slot_of is not None and slot_of.bits == 64:  # read the whole 8-byte variable
+            relative = Slot("", slot_of.type, "DI", slot_of.bit_offset, 64)
+        else:
+            kind = slot_of.type if slot_of is not None else _type_of_width(int(instance.width))
+            relative = Slot("", kind, "DI", instance.byte * 8 + instance.bit, int(instance.width))
         return lambda frame, params, regs: read_slot(relative, frame, regs[DI], regs[AR2], params)
     if not isinstance(operand, Direct):
         return None
     own = info.slot_at(operand)
-    type_name = own.type if own is not None else _type_of_width(int(operand.width))
-    local = Slot("", type_name, "L", operand.byte * 8 + operand.bit, int(operand.width))
+    if own is not None and own.bits == 64:  # either half of an 8-byte local: the whole value
+        local = Slot("", own.type, "L", own.bit_offset, 64)
+    else:
+        type_name = own.type if own is not None else _type_of_width(int(operand.width))
+        local = Slot("", type_name, "L", operand.byte * 8 + operand.bit, int(operand.width))
     area = operand.area
     if area is Area.L:
         return lambda frame, params, regs: read_slot(local, frame, frame, 0, params)

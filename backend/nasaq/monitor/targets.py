@@ -46,12 +46,14 @@ from nasaq.ir import Area, Block, BlockKind, ConstType, Direct, Program, Variabl
 from nasaq.ir.types import (
     ACCU_TYPES,
     ELEMENTARY_BITS,
+    LONG_TYPES,
     NUMBER_TYPES,
     TYPE_ALIASES,
     array_shape,
 )
 from nasaq.lang.stl import addresses as stl_addresses
 from nasaq.lang.stl.constants import ConstantError, real_pattern, typed
+from nasaq.monitor import long_values
 from nasaq.monitor.values import Value, decode
 
 EXAMPLES = 'MW10, DB1.DBW2, T1, "Motor", DB1.level'
@@ -403,6 +405,11 @@ class _Resolver:
             offset = variable.offset_bits
             bit = offset % 8 if width is Width.BIT else 0
             return Target(path, kind, Direct(Area.DB, width, offset // 8, bit, db=db))
+        if kind in LONG_TYPES or _STRING.match(kind):
+            # 8 bytes, or a string, from the variable's first byte (``long_values`` reads them)
+            kind = kind if kind in LONG_TYPES else re.sub(r"\s+", "", kind)
+            start = variable.offset_bits // 8
+            return Target(path, kind, Direct(Area.DB, Width.DWORD, start, db=db))
         if array_shape(variable.type) is not None:
             raise self.error(
                 phrase("add_index", path=path, type=variable.type, example=_first(path, variable))
@@ -523,21 +530,39 @@ def read(target: Target, cpu: Cpu) -> Value:
     if target.counter is not None:
         return cpu.counter(_numbered(target, target.counter, cpu, "C"))[1]
     direct = _direct(target)
+    kind = _canonical(target.type)
     try:
+        if kind in LONG_TYPES:
+            return decode(kind, long_values.read_long(cpu, direct))
+        if kind.endswith("]"):
+            return long_values.read_string(cpu, direct, kind)
         pattern = cpu.read(direct)
     except KeyError:
         return None
     except IndexError:
         raise _outside(target, direct, cpu) from None
-    return decode(_canonical(target.type), pattern)
+    return decode(kind, pattern)
 
 
 def write(target: Target, cpu: Cpu, value: bool | int | float | str | None) -> None:
     """Stores ``value`` (see :func:`encode`) at ``target``; timers and counters: MON606."""
-    pattern = encode(target, value)
+    kind = _canonical(target.type)
+    text = ""
+    if kind.endswith("]"):
+        chars = long_values.string_value(kind, value)
+        if not isinstance(chars, str):
+            raise _bad(target, chars)
+        text = chars
+    else:
+        pattern = encode(target, value)
     direct = _direct(target)
     try:
-        cpu.write(direct, pattern)
+        if kind.endswith("]"):
+            long_values.write_string(cpu, direct, kind, text)
+        elif kind in LONG_TYPES:
+            long_values.write_long(cpu, direct, pattern)
+        else:
+            cpu.write(direct, pattern)
     except KeyError:
         raise TargetError("MON603", target.text, phrase("db_not_loaded", db=direct.db)) from None
     except IndexError:
@@ -643,6 +668,11 @@ def encode(target: Target, value: bool | int | float | str | None) -> int:
         return _encode_bool(target, value)
     if kind == "REAL":
         return _encode_real(target, value)
+    if kind in long_values.WIDE_TYPES:
+        pattern = long_values.encode(kind, value)
+        if not isinstance(pattern, int):
+            raise _bad(target, pattern)
+        return pattern
     if kind not in _RANGES:
         raise _bad(target, phrase("type_not_writable", type=target.type))
     number = _whole(target, kind, value)

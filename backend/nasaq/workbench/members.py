@@ -28,6 +28,7 @@ from nasaq.ir import Block, BlockKind, Program, Variable
 from nasaq.ir.types import (
     ACCU_TYPES,
     ELEMENTARY_BITS,
+    LONG_TYPES,
     NUMBER_TYPES,
     TYPE_ALIASES,
     array_shape,
@@ -38,7 +39,8 @@ Section = Literal["IN", "OUT", "IN_OUT", "STAT", "TEMP", "RETURN", "DATA"]
 MAX_ELEMENTS = 256  # larger arrays stay one row: a DB editor lists, it does not dump memory
 
 _STRING = re.compile(r"^STRING\s*(?:\[\s*(\d+)\s*\])?$", re.IGNORECASE)
-_WATCHABLE = ACCU_TYPES | NUMBER_TYPES  # what a watch table resolves to one value
+_WATCHABLE = ACCU_TYPES | NUMBER_TYPES | LONG_TYPES  # what a watch table resolves to one value
+_TEXT = re.compile(r"^W?STRING\s*\[\s*\d+\s*\]$")  # ... and strings (``monitor.long_values``)
 _BY_REFERENCE = re.compile(r"^(?:ARRAY|W?STRING|STRUCT|UDT|DATE_AND_TIME$)")  # IN_OUT: a pointer
 _EPOCH = datetime.date(1990, 1, 1)
 
@@ -102,7 +104,8 @@ def _rows(
         initial=", ".join(initial) if initial else None,
         actual=_actual(kind, variable.offset_bits, variable.size_bits, data) if located else None,
         comment=variable.comment,
-        elementary=kind in _WATCHABLE and located,
+        elementary=located
+        and (kind in _WATCHABLE or (_TEXT.match(kind) is not None and section != "IN_OUT")),
         file=file,
         line=line,
     )

@@ -84,6 +84,10 @@ import problemsProfileEn from '../problems/locales-profile/en.json';
 import problemsProfileAr from '../problems/locales-profile/ar.json';
 import problemsProfileFa from '../problems/locales-profile/fa.json';
 import problemsProfileVi from '../problems/locales-profile/vi.json';
+import problemsSyscommEn from '../problems/locales-syscomm/en.json';
+import problemsSyscommAr from '../problems/locales-syscomm/ar.json';
+import problemsSyscommFa from '../problems/locales-syscomm/fa.json';
+import problemsSyscommVi from '../problems/locales-syscomm/vi.json';
 import problemsTiafilesEn from '../problems/locales-tiafiles/en.json';
 import problemsTiafilesAr from '../problems/locales-tiafiles/ar.json';
 import problemsTiafilesFa from '../problems/locales-tiafiles/fa.json';
@@ -104,6 +108,10 @@ import problemsStlexportEn from '../problems/locales-stlexport/en.json';
 import problemsStlexportAr from '../problems/locales-stlexport/ar.json';
 import problemsStlexportFa from '../problems/locales-stlexport/fa.json';
 import problemsStlexportVi from '../problems/locales-stlexport/vi.json';
+import problemsVariantEn from '../problems/locales-variant/en.json';
+import problemsVariantAr from '../problems/locales-variant/ar.json';
+import problemsVariantFa from '../problems/locales-variant/fa.json';
+import problemsVariantVi from '../problems/locales-variant/vi.json';
 
 /** The interface languages, in the order the language switch lists them. */
 export const LANGUAGES = ['en', 'ar', 'fa', 'vi'] as const;
@@ -120,10 +128,10 @@ export const LANGUAGE_STORAGE_KEY = 'nasaq.lang';
  * its own top-level namespace and may add `problems.<key>` texts for the diagnostic codes it owns.
  */
 const FEATURES = {
-  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn, phrasesEn, examplesEn, lessonPaneEn, plantsEn, graphChecksEn, graphSyntaxEn, graphRunEn, graphChartEn, graphStepEn, graphControlEn, graphDocEn, problemsLimitsEn, problemsProfileEn, problemsTiafilesEn, problemsFormsEn, problemsFunctionsEn, problemsDefectsEn, problemsStlexportEn],
-  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr, phrasesAr, examplesAr, lessonPaneAr, plantsAr, graphChecksAr, graphSyntaxAr, graphRunAr, graphChartAr, graphStepAr, graphControlAr, graphDocAr, problemsLimitsAr, problemsProfileAr, problemsTiafilesAr, problemsFormsAr, problemsFunctionsAr, problemsDefectsAr, problemsStlexportAr],
-  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa, phrasesFa, examplesFa, lessonPaneFa, plantsFa, graphChecksFa, graphSyntaxFa, graphRunFa, graphChartFa, graphStepFa, graphControlFa, graphDocFa, problemsLimitsFa, problemsProfileFa, problemsTiafilesFa, problemsFormsFa, problemsFunctionsFa, problemsDefectsFa, problemsStlexportFa],
-  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi, phrasesVi, examplesVi, lessonPaneVi, plantsVi, graphChecksVi, graphSyntaxVi, graphRunVi, graphChartVi, graphStepVi, graphControlVi, graphDocVi, problemsLimitsVi, problemsProfileVi, problemsTiafilesVi, problemsFormsVi, problemsFunctionsVi, problemsDefectsVi, problemsStlexportVi],
+  en: [cpuEn, watchTablesEn, ioEn, xrefEn, cpuPropsEn, panelsEn, phrasesEn, examplesEn, lessonPaneEn, plantsEn, graphChecksEn, graphSyntaxEn, graphRunEn, graphChartEn, graphStepEn, graphControlEn, graphDocEn, problemsLimitsEn, problemsProfileEn, problemsTiafilesEn, problemsFormsEn, problemsFunctionsEn, problemsDefectsEn, problemsStlexportEn, problemsVariantEn, problemsSyscommEn],
+  ar: [cpuAr, watchTablesAr, ioAr, xrefAr, cpuPropsAr, panelsAr, phrasesAr, examplesAr, lessonPaneAr, plantsAr, graphChecksAr, graphSyntaxAr, graphRunAr, graphChartAr, graphStepAr, graphControlAr, graphDocAr, problemsLimitsAr, problemsProfileAr, problemsTiafilesAr, problemsFormsAr, problemsFunctionsAr, problemsDefectsAr, problemsStlexportAr, problemsVariantAr, problemsSyscommAr],
+  fa: [cpuFa, watchTablesFa, ioFa, xrefFa, cpuPropsFa, panelsFa, phrasesFa, examplesFa, lessonPaneFa, plantsFa, graphChecksFa, graphSyntaxFa, graphRunFa, graphChartFa, graphStepFa, graphControlFa, graphDocFa, problemsLimitsFa, problemsProfileFa, problemsTiafilesFa, problemsFormsFa, problemsFunctionsFa, problemsDefectsFa, problemsStlexportFa, problemsVariantFa, problemsSyscommFa],
+  vi: [cpuVi, watchTablesVi, ioVi, xrefVi, cpuPropsVi, panelsVi, phrasesVi, examplesVi, lessonPaneVi, plantsVi, graphChecksVi, graphSyntaxVi, graphRunVi, graphChartVi, graphStepVi, graphControlVi, graphDocVi, problemsLimitsVi, problemsProfileVi, problemsTiafilesVi, problemsFormsVi, problemsFunctionsVi, problemsDefectsVi, problemsStlexportVi, problemsVariantVi, problemsSyscommVi],
 } as const;
 
 export type Catalogue = typeof en & { lad: typeof ladEn } & typeof cpuEn &

@@ -41,10 +41,12 @@ interface Place {
 /** The address and symbol columns of an entry: one is the entry, the other from the symbol table. */
 function placeOf(entry: string, symbols: Map<string, SymbolEntry>, byName: Map<string, SymbolEntry>): Place {
   const trimmed = entry.trim();
-  if (trimmed.startsWith('"')) {
-    const name = trimmed.replace(/^"|"$/g, '');
+  if (/^"[^"]*"$/.test(trimmed)) {
+    const name = trimmed.slice(1, -1);
     return { address: byName.get(name.toLowerCase())?.address ?? '', symbol: name };
   }
+  // a variable of a symbolic DB ("Data".x): its path is the symbol, it has no one address
+  if (trimmed.startsWith('"')) return { address: '', symbol: trimmed };
   const address = normaliseAddress(trimmed);
   return { address: trimmed, symbol: symbols.get(address)?.name ?? '' };
 }
@@ -127,7 +129,7 @@ function WatchTableRow({ row, place, value, report, local, online, onChange, onR
         <code>{place.address}</code>
       </td>
       <td>
-        <bdi>{place.symbol}</bdi>
+        <bdi dir={place.symbol.startsWith('"') ? 'ltr' : undefined}>{place.symbol}</bdi>
       </td>
       <td>
         {formats.length > 0 ? (

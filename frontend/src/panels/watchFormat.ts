@@ -4,6 +4,12 @@
  * CHAR a character, TIME and S5TIME milliseconds) shown as binary, hex, decimal, REAL, characters
  * or a time.
  *
+ * The S7-1200/1500 types show as TIA Portal's watch table shows them: SINT/LINT/LTIME signed,
+ * USINT ... ULINT unsigned, LREAL a double (15 significant digits), LTIME in nanoseconds as
+ * `LT#1D_2H_3M_4S_5MS_6US_7NS`, a WCHAR as its character, a STRING/WSTRING quoted. The 64-bit
+ * integers come as numbers, or as their digits in a string above 2**53 (what a JSON number
+ * keeps exact), and are formatted with BigInt so BIN and HEX show every bit.
+ *
  * S5TIME and COUNTER are STEP 7's SIMATIC_TIME and COUNTER formats. A timer (`T1`) shows its
  * time value as `S5T#1S850MS` and a counter (`C5`) its count as `C#5`. A WORD in these formats
  * is read as the CPU stores them: a timer word holds the time base in bits 12-13 (00 = 10 ms,
@@ -44,8 +50,19 @@ const TYPE_BITS: Record<string, number> = {
   TIME: 32,
   TIME_OF_DAY: 32,
   TOD: 32,
+  SINT: 8,
+  USINT: 8,
+  UINT: 16,
+  WCHAR: 16,
+  UDINT: 32,
+  LINT: 64,
+  ULINT: 64,
+  LWORD: 64,
+  LREAL: 64,
+  LTIME: 64,
 };
-const SIGNED = new Set(['INT', 'DINT', 'TIME']);
+const SIGNED = new Set(['INT', 'DINT', 'TIME', 'SINT']);
+const SIGNED_64 = new Set(['LINT', 'LTIME']);
 
 export function bitsOf(type: string | undefined): number | null {
   return type ? (TYPE_BITS[type.toUpperCase()] ?? null) : null;
@@ -59,6 +76,10 @@ export function formatsFor(type: string | undefined): DisplayFormat[] {
   const bits = bitsOf(type);
   if (bits === null) return [];
   if (bits === 1) return ['bool', 'bin'];
+  if (kind === 'LTIME') return ['time', 'dec', 'hex', 'bin'];
+  if (kind === 'LREAL') return ['real', 'hex', 'bin'];
+  if (bits === 64) return ['bin', 'hex', 'dec', 'real', 'char'];
+  if (kind === 'WCHAR') return ['char', 'hex', 'dec', 'bin'];
   if (bits === 32) return ['bin', 'hex', 'dec', 'real', 'char', 'time'];
   if (kind === 'S5TIME') return ['s5time', 'dec'];
   if (kind === 'WORD') return ['bin', 'hex', 'dec', 'char', 's5time', 'counter'];
@@ -73,10 +94,18 @@ export function defaultFormat(type: string | undefined): DisplayFormat {
     case 'INT':
     case 'DINT':
     case 'DATE':
+    case 'SINT':
+    case 'USINT':
+    case 'UINT':
+    case 'UDINT':
+    case 'LINT':
+    case 'ULINT':
       return 'dec';
     case 'REAL':
+    case 'LREAL':
       return 'real';
     case 'CHAR':
+    case 'WCHAR':
       return 'char';
     case 'S5TIME':
     case 'TIMER':
@@ -86,6 +115,7 @@ export function defaultFormat(type: string | undefined): DisplayFormat {
     case 'TIME':
     case 'TIME_OF_DAY':
     case 'TOD':
+    case 'LTIME':
       return 'time';
     default:
       return 'hex';
@@ -109,6 +139,7 @@ function patternOf(value: number | string | boolean, type: string, bits: number)
   if (typeof value === 'boolean') return value ? 1 : 0;
   if (typeof value === 'string') {
     if (type === 'CHAR') return value.charCodeAt(0) & 0xff;
+    if (type === 'WCHAR') return value.charCodeAt(0) & 0xffff;
     if (type === 'REAL') {
       const special: Record<string, number> = { NaN: Number.NaN, '+Inf': Infinity, '-Inf': -Infinity };
       return value in special ? floatBits(special[value]!) : null;
@@ -169,12 +200,90 @@ function formatChars(pattern: number, bits: number): string {
   return `'${text}'`;
 }
 
-const HEX_PREFIX: Record<number, string> = { 8: 'B#16#', 16: 'W#16#', 32: 'DW#16#' };
+const HEX_PREFIX: Record<number, string> = { 8: 'B#16#', 16: 'W#16#', 32: 'DW#16#', 64: 'LW#16#' };
+const SPECIAL_FLOATS: Record<string, number> = { NaN: Number.NaN, '+Inf': Infinity, '-Inf': -Infinity };
+
+const doubleView = new DataView(new ArrayBuffer(8));
+
+/** The unsigned 64-bit pattern of a value of a 64-bit type (LREAL as IEEE 754 double). */
+function longPatternOf(value: number | string | boolean, type: string): bigint | null {
+  if (type === 'LREAL') {
+    const number = typeof value === 'string' ? SPECIAL_FLOATS[value] : typeof value === 'number' ? value : undefined;
+    if (number === undefined) return null;
+    doubleView.setFloat64(0, number);
+    return doubleView.getBigUint64(0);
+  }
+  if (typeof value === 'boolean') return value ? 1n : 0n;
+  if (typeof value === 'number') return Number.isInteger(value) ? BigInt.asUintN(64, BigInt(value)) : null;
+  return /^-?\d+$/.test(value) ? BigInt.asUintN(64, BigInt(value)) : null;
+}
+
+/** `LT#1D_2H_3M_4S_5MS_6US_7NS`, `LT#-500MS`, `LT#0NS`: an LTIME (nanoseconds) as TIA writes it. */
+export function formatLongTime(ns: bigint): string {
+  const sign = ns < 0n ? '-' : '';
+  let rest = ns < 0n ? -ns : ns;
+  const parts: string[] = [];
+  for (const [unit, size] of [
+    ['D', 86_400_000_000_000n],
+    ['H', 3_600_000_000_000n],
+    ['M', 60_000_000_000n],
+    ['S', 1_000_000_000n],
+    ['MS', 1_000_000n],
+    ['US', 1_000n],
+  ] as const) {
+    if (rest >= size) {
+      parts.push(`${rest / size}${unit}`);
+      rest %= size;
+    }
+  }
+  if (rest > 0n || parts.length === 0) parts.push(`${rest}NS`);
+  return `LT#${sign}${parts.join('_')}`;
+}
+
+/** An LREAL as TIA shows it: up to 15 significant digits, exponent outside 1e-4 .. 1e15. */
+function formatLongReal(value: number): string {
+  if (Number.isNaN(value)) return 'NaN';
+  if (!Number.isFinite(value)) return value > 0 ? '+Inf' : '-Inf';
+  if (value !== 0 && (Math.abs(value) >= 1e15 || Math.abs(value) < 1e-4)) {
+    return Number(value.toPrecision(15)).toExponential();
+  }
+  return String(Number(value.toPrecision(15)));
+}
+
+function formatLong(value: number | string | boolean, kind: string, format: DisplayFormat): string {
+  if (kind === 'LREAL' && typeof value === 'string' && value in SPECIAL_FLOATS && format === 'real') return value;
+  const pattern = longPatternOf(value, kind);
+  if (pattern === null) return String(value);
+  switch (format) {
+    case 'bin':
+      return `2#${pattern.toString(2).padStart(64, '0').replace(/(\d{4})(?=\d)/g, '$1_')}`;
+    case 'hex':
+      return `LW#16#${pattern.toString(16).toUpperCase().padStart(16, '0').replace(/([0-9A-F]{4})(?=[0-9A-F])/g, '$1_')}`;
+    case 'dec':
+      return String(SIGNED_64.has(kind) ? BigInt.asIntN(64, pattern) : pattern);
+    case 'real':
+      doubleView.setBigUint64(0, pattern);
+      return formatLongReal(doubleView.getFloat64(0));
+    case 'time':
+      return formatLongTime(BigInt.asIntN(64, pattern));
+    case 'char': {
+      let text = '';
+      for (let shift = 56n; shift >= 0n; shift -= 8n) {
+        const code = Number((pattern >> shift) & 0xffn);
+        text += code >= 32 && code < 127 ? String.fromCharCode(code) : '.';
+      }
+      return `'${text}'`;
+    }
+    default:
+      return String(value);
+  }
+}
 
 /** A watch value as text in `format`; '' when there is no value yet. */
 export function formatValue(value: WatchValue['value'], type: string | undefined, format: DisplayFormat): string {
   if (value === null || value === undefined) return '';
   const kind = (type ?? '').toUpperCase();
+  if (/^W?STRING\[/.test(kind) && typeof value === 'string') return `'${value.replace(/'/g, "''")}'`;
   if ((kind === 'TIMER' || kind === 'COUNTER') && typeof value === 'number') {
     if (format === 'dec') return String(value);
     return kind === 'TIMER' ? formatS5Time(value) : `C#${value}`;
@@ -185,6 +294,8 @@ export function formatValue(value: WatchValue['value'], type: string | undefined
     const on = value === true || value === 1;
     return format === 'bin' ? (on ? '2#1' : '2#0') : on ? 'TRUE' : 'FALSE';
   }
+  if (bits === 64) return formatLong(value, kind, format);
+  if (kind === 'WCHAR' && typeof value === 'string' && format === 'char') return `WCHAR#'${value}'`;
   if (kind === 'S5TIME' && typeof value === 'number') return format === 'dec' ? String(value) : formatS5Time(value);
   if (kind === 'REAL' && (format === 'real' || typeof value === 'string') && format !== 'bin' && format !== 'hex') {
     return typeof value === 'string' ? value : formatReal(Number(value));
@@ -346,5 +457,6 @@ export function numericValue(value: boolean | number | string | null | undefined
   if (typeof value === 'boolean') return value ? 1 : 0;
   if (typeof value === 'number') return Number.isFinite(value) ? value : null;
   if (typeof value === 'string' && value.length === 1) return value.charCodeAt(0);
+  if (typeof value === 'string' && /^-?\d+$/.test(value)) return Number(value); // a 64-bit integer
   return null;
 }

@@ -362,7 +362,6 @@ def test_inputs_and_outputs(program: Program) -> None:
         ("DB1.arr[x]", "an array index is a whole number"),
         ("DB2.recs[2].a", "watch recs[2] by address, from DB2.DBB4"),
         ("DB2.recs[1]", "the STRUCT elements of DB2.recs"),
-        ("DB1.name", "STRING[8] (10 bytes), not one elementary value"),
         ("DB1.when", "DATE_AND_TIME (8 bytes), not one elementary value"),
         ("DB1.level[1]", "DB1.level has type INT, not an ARRAY"),
         ("DB1[1]", "DB1 is a data block, not an ARRAY"),

@@ -26,14 +26,23 @@ from dataclasses import dataclass, field
 
 from nasaq.diagnostics import Diagnostic
 from nasaq.ir import BlockKind
-from nasaq.lang import dtl, wide_text
+from nasaq.lang import dtl, tia_iec, wide_text
 from nasaq.lang.layout import Expansion, Layout, RecursiveTypeError, Slot
+from nasaq.lang.ob_start_info import start_info
 from nasaq.lang.profiles import DEFAULT_PROFILE, S7_1500_TYPES, is_s7_1500
-from nasaq.lang.scl import ast, optimized
+from nasaq.lang.scl import ast, descriptor, jump_labels, optimized
 from nasaq.lang.stl.addresses import AddressError, parse_address
 from nasaq.lang.stl.diag import problem
 from nasaq.lang.stl.symbols import Symbol, SymbolTable
-from nasaq.lang.system_blocks import F_TRIG_SFB, R_TRIG_SFB, SFB_INTERFACES
+from nasaq.lang.system_blocks import (
+    F_TRIG_SFB,
+    R_TRIG_SFB,
+    SFB_INTERFACES,
+    SFB_NAMES,
+    s7_1500_only,
+    sfb_number,
+)
+from nasaq.lang.system_types import system_fb_sections, system_type
 from nasaq.lang.tia_names import ob_event, ob_number
 from nasaq.lang.tia_system import tia_system
 from nasaq.lang.types import (
@@ -72,6 +81,7 @@ TIA_IEC_TYPES = {
     "CTUD_INT": 2,
     "IEC_COUNTER": 2,
 }
+TIA_IEC_TYPES |= tia_iec.INSTANCE_TYPES  # IEC_DCOUNTER ..., IEC_LTIMER (``nasaq.lang.tia_iec``)
 AUTO_NUMBERED = (BlockKind.FB, BlockKind.FC, BlockKind.DB, BlockKind.UDT)
 SECTION_OF_KEYWORD = {
     "VAR_INPUT": "IN",
@@ -82,7 +92,8 @@ SECTION_OF_KEYWORD = {
     "VAR_TEMP": "TEMP",
 }
 # A variable whose declared type is unknown (already reported): never reported again.
-# Parameter types of the S7-1200/1500 family that are no elementary type (SCL500 or SCL501).
+# Parameter types of the S7-1200/1500 family that are no elementary type (SCL500 under a classic
+# profile; ``scl.descriptor`` under S7-1500).
 _PARAMETER_ONLY = frozenset({"VARIANT", "DB_ANY"})
 UNKNOWN = Elementary("UNKNOWN")
 VOID = Elementary("VOID")
@@ -129,6 +140,20 @@ class SclBlock:
 
     def fields(self, section: str) -> list[Field]:
         return [declared for name, group in self.sections if name == section for declared in group]
+
+
+def _start_information(info: SclBlock) -> None:
+    """An optimized OB's event inputs TIA declares itself (``nasaq.lang.ob_start_info``)."""
+    inputs = start_info(info.name, info.number)
+    taken = info.variables  # a TEMP of the same name is the user's own
+    fields = [Field(n, Elementary(kind), None) for n, kind in inputs if n.casefold() not in taken]
+    if fields:
+        info.sections.insert(0, ("IN", fields))
+    where = info.node.name.loc
+    for declared in fields:
+        info.variables.setdefault(
+            declared.name.casefold(), Variable(declared.name, "IN", declared.type, where)
+        )
 
 
 class SclIndex:
@@ -257,6 +282,13 @@ class SclIndex:
         if number is not None:
             return number
         event = ob_event(name)
+        if event is None and optimized.marked(node):
+            # TIA's further program-cycle OB of an optimized (S7-1200/1500) source.
+            what = f'The organization block "{name}" (a program-cycle OB numbered from 123)'
+            self.diagnostics.append(
+                problem("SCL500", file, node.name.loc, what=what, profile=self.profile)
+            )
+            return None
         if event is None:
             self.diagnostics.append(problem("SCL205", file, node.name.loc, name=name))
             return None
@@ -297,6 +329,7 @@ class SclIndex:
 
     def _declare(self, info: SclBlock) -> None:
         node = info.node
+        jump_labels.rejoin(node.code)
         optimized.declare(self, info)
         for section in node.sections:
             if isinstance(section, ast.ConstSection):
@@ -311,7 +344,9 @@ class SclIndex:
             elif _is_constant_section(section):
                 # first, as CONST: TIA exports VAR CONSTANT after the arrays it bounds
                 for decl in section.decls:
-                    if isinstance(decl, ast.VarDecl) and decl.init:
+                    if isinstance(decl, ast.VarDecl) and not decl.init:
+                        _default_constant(info, decl)
+                    elif isinstance(decl, ast.VarDecl) and decl.init:
                         first = decl.init[0]
                         if not isinstance(first, ast.InitRepeat | ast.InitList | ast.InitStruct):
                             for part in decl.names:
@@ -328,6 +363,8 @@ class SclIndex:
                 name = "TEMP"  # VAR of an FC or OB is temporary
             fields = self._fields(info, section.decls, name)
             info.sections.append((name, fields))
+        if info.kind is BlockKind.OB and info.optimized and not info.fields("IN"):
+            _start_information(info)
         if node.return_type is not None:
             info.return_type = self.type_of(info, node.return_type)
         if info.kind in (BlockKind.DB, BlockKind.UDT):
@@ -342,6 +379,18 @@ class SclIndex:
             if not isinstance(decl, ast.VarDecl):
                 continue
             data_type = self.type_of(info, decl.type)
+            misplaced = not _takes_descriptor(info, section, data_type)
+            if descriptor.is_descriptor(data_type) and misplaced:
+                self.diagnostics.append(
+                    problem(
+                        "SCL550",
+                        info.file,
+                        decl.type.loc,
+                        what=descriptor.describe(data_type),
+                        section=section or "STRUCT",
+                    )
+                )
+                data_type = UNKNOWN
             for part in decl.names:
                 key = part.name.casefold()
                 duplicate = key in seen or (section is not None and key in info.variables)
@@ -384,10 +433,9 @@ class SclIndex:
             return StructType(tuple(self._fields(info, node.members, None)))
         if isinstance(node, ast.ArrayType):
             dims: list[tuple[int, int]] = []
+            if any(dim.low is None for dim in node.dims):  # ARRAY[*]
+                return self._open_array(info, node)
             for dim in node.dims:
-                if dim.low is None:  # ARRAY[*]
-                    self._s7_1500_only(info, "ARRAY[*]", dim.loc)
-                    return UNKNOWN
                 low = self._bound(info, dim.low, dim.loc)
                 high = None if low is None else self._bound(info, dim.high, dim.loc)
                 if low is None or high is None:
@@ -433,14 +481,24 @@ class SclIndex:
                     return UNKNOWN
                 return found
             if node.name.upper() in _PARAMETER_ONLY:
-                self._s7_1500_only(info, node.name.upper(), node.loc)
-                return UNKNOWN
+                if not is_s7_1500(self.profile):
+                    self._s7_1500_only(info, node.name.upper(), node.loc)
+                    return UNKNOWN
+                if node.name.upper() == "VARIANT":
+                    return descriptor.VARIANT
+                return descriptor.DB_ANY
         block = self.named(node.name)
         if block is not None and block.kind in (BlockKind.FB, BlockKind.UDT):
             return BlockType(block.kind.value, block.number)
         iec = None if node.quoted else self._iec(info, node.name, node.loc)
         if iec is not None:
             return iec if iec.number >= 0 else UNKNOWN
+        system = None if node.quoted else system_type(node.name)
+        if system is not None:  # HW_HSC, TCON_IP_v4 ... (``nasaq.lang.system_types``)
+            if not is_s7_1500(self.profile):
+                self._s7_1500_only(info, node.name, node.loc)
+                return UNKNOWN
+            return system
         if not node.quoted and node.name.upper() == dtl.NAME:  # after the program's own types
             if not is_s7_1500(self.profile):
                 self._s7_1500_only(info, dtl.NAME, node.loc)
@@ -451,6 +509,21 @@ class SclIndex:
             return BlockType("SFB", absolute[1])
         self._unknown_type(info, node.name, node.loc, node.quoted)
         return UNKNOWN
+
+    def _open_array(self, info: SclBlock, node: ast.ArrayType) -> DataType:
+        """``ARRAY[*]`` (S7-1200/1500): every dimension open (``ARRAY[*, *]``), at most six."""
+        if not is_s7_1500(self.profile):
+            self._s7_1500_only(info, "ARRAY[*]", node.dims[0].loc)
+            return UNKNOWN
+        bad = next((dim for dim in node.dims if dim.low is not None), None)
+        if bad is not None or len(node.dims) > descriptor.MAX_DIMS:
+            where = bad.loc if bad is not None else node.loc
+            self.diagnostics.append(problem("SCL551", info.file, where))
+            return UNKNOWN
+        element = self.type_of(info, node.element)
+        if element == UNKNOWN:
+            return UNKNOWN
+        return descriptor.open_array(element, len(node.dims))
 
     def _unknown_type(self, info: SclBlock, name: str, loc: ast.Loc, quoted: bool) -> None:
         """SCL202, or SCL920 for a TIA system block/type Nasaq does not simulate (TIA writes
@@ -470,18 +543,21 @@ class SclIndex:
             return BlockType("SFB", number)
         number = TIA_IEC_TYPES.get(upper)
         if number is None:
-            return None
+            number = sfb_number(upper)  # PID_Compact, TCON ... (``nasaq.lang.system_blocks``)
+            if number is None:
+                return None
+            if not s7_1500_only(number):
+                return BlockType("SFB", number)
         if not is_s7_1500(self.profile):
-            self._s7_1500_only(info, upper, loc)
+            named = upper if upper in TIA_IEC_TYPES else SFB_NAMES.get(number, upper)
+            self._s7_1500_only(info, named, loc)  # (TON_TIME, IEC_DCOUNTER as written)
             return BlockType("SFB", -1)
         return BlockType("SFB", number)
 
     def _s7_1500_only(self, info: SclBlock, what: str, loc: ast.Loc) -> None:
-        """SCL500 under a classic profile; under S7-1500, ``ARRAY[*]``, VARIANT and DB_ANY are
-        valid but cannot run here yet (SCL501, COMPATIBILITY.md "S7-1500 profile")."""
+        """SCL500 under a classic profile (``ARRAY[*]``, VARIANT and DB_ANY run under S7-1500:
+        ``scl.descriptor``)."""
         if is_s7_1500(self.profile):
-            if what in _PARAMETER_ONLY or what == "ARRAY[*]":
-                self.diagnostics.append(problem("SCL501", info.file, loc, what=what))
             return
         self.diagnostics.append(problem("SCL500", info.file, loc, what=what, profile=self.profile))
 
@@ -506,7 +582,8 @@ class SclIndex:
             if node.kind == "REAL":
                 return float(text)
             prefix, _, body = text.rpartition("#")
-            if prefix.upper() in ("INT", "DINT") and body.lstrip("+-").isdigit():
+            integers = ("INT", "DINT", "SINT", "USINT", "UINT", "UDINT", "LINT", "ULINT")
+            if prefix.upper() in integers and body.lstrip("+-").isdigit():
                 return int(body)
             return None
         if isinstance(node, ast.Name | ast.Local):
@@ -535,15 +612,7 @@ class SclIndex:
 
     def _expand(self, block: BlockType) -> Expansion:
         if block.kind == "SFB":
-            interface = SFB_INTERFACES.get(block.number)
-            if interface is None:
-                return None
-            sections: dict[str, list[Field]] = {}
-            for section, name, type_name in interface:
-                found = elementary(type_name)
-                if found is not None:
-                    sections.setdefault(section, []).append(Field(name, found))
-            return list(sections.items())
+            return system_fb_sections(block.number)
         info = self.blocks.get((BlockKind(block.kind), block.number))
         if info is None:
             return None
@@ -610,11 +679,43 @@ class SclIndex:
         self.diagnostics.append(problem("SCL210", info.file, info.node.name.loc, name=name))
 
 
+# TIA exports a VAR CONSTANT member whose value is its type's default without the value
+# (``STATE_RESET : Int;``): a constant 0 (FALSE for a BOOL, '' for a STRING).
+_ZERO_CONSTANT_TYPES = frozenset(
+    {"BOOL", "BYTE", "WORD", "DWORD", "LWORD", "SINT", "INT", "DINT", "LINT", "USINT", "UINT"}
+    | {"UDINT", "ULINT", "REAL", "LREAL"}
+)
+
+
+def _default_constant(info: SclBlock, decl: ast.VarDecl) -> None:
+    kind = decl.type.name.upper() if isinstance(decl.type, ast.NamedType) else ""
+    if kind not in _ZERO_CONSTANT_TYPES and kind != "STRING":
+        return
+    for part in decl.names:
+        if kind == "STRING":  # the empty text
+            zero, value = ast.Literal("STRING", "''", loc=part.loc), None
+        elif kind == "BOOL":
+            zero, value = ast.Literal("BOOL", "FALSE", loc=part.loc), 0
+        else:
+            zero, value = ast.Literal("INTEGER", "0", loc=part.loc), 0
+        info.constants[part.name.casefold()] = Constant(part.name, zero, value)
+
+
 def _is_constant_section(section: object) -> bool:
     """A TIA ``VAR CONSTANT`` section."""
     if not isinstance(section, ast.VarSection) or section.modifier is None:
         return False
     return section.modifier.upper() == "CONSTANT"
+
+
+def _takes_descriptor(info: SclBlock, section: str | None, data_type: DataType) -> bool:
+    """Where TIA Portal accepts VARIANT and ``ARRAY[*]``: the parameters of an FC (IN, OUT,
+    IN_OUT), a VARIANT as IN or IN_OUT of an FB, an ``ARRAY[*]`` as IN_OUT of an FB."""
+    if section not in ("IN", "OUT", "IN_OUT"):
+        return False
+    if info.kind is BlockKind.FC or section == "IN_OUT":
+        return True
+    return section == "IN" and isinstance(data_type, descriptor.VariantParam)
 
 
 def _absolute(text: str) -> tuple[BlockKind, int] | None:

@@ -165,6 +165,8 @@ def symbol_node(kind: str, text: str, where: ast.Loc) -> ast.Symbol:
 def address_node(kind: str, text: str, where: ast.Loc) -> ast.Address | ast.Name:
     if _NOT_AN_ADDRESS.match(text):  # ``m1 : INT``: an I/Q/M bit needs ``.bit``
         return ast.Name(text, where)
+    if text[-2:] in (":P", ":p"):  # TIA's %IW10:P is the peripheral word PIW10
+        return ast.Address("P" + text[1:-2], where)
     return ast.Address(text.replace(" ", "").replace("\t", ""), where)
 
 
@@ -572,6 +574,15 @@ class AstBuilder:
     def indexed_address(self, children: list[Any]) -> ast.IndexedAddress:
         area: AnyToken = children[0]
         return ast.IndexedAddress(_compact(area), list(children[1:]), loc=span(area, children[-1]))
+
+    def area_paren(self, children: list[Any]) -> ast.IndexedAddress:
+        """TIA's ``%IB(#i)``: STEP 7's ``IB[i]``; with ``:P`` the peripheral ``PIB[i]``."""
+        area: AnyToken = children[0]
+        last = children[-1]
+        peripheral = isinstance(last, _TOKENS) and last.type == "PERIPHERAL"
+        indices = list(children[1:-1] if peripheral else children[1:])
+        name = _compact(area).lstrip("%")
+        return ast.IndexedAddress("P" + name if peripheral else name, indices, span(area, last))
 
     def member(self, children: list[Any]) -> ast.Member:
         base, token = children

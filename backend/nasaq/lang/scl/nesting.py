@@ -14,6 +14,8 @@ passes see an already reported gap instead of the deep tree.
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Callable
+from operator import attrgetter
 from typing import Any
 
 from nasaq.diagnostics import Diagnostic, render
@@ -27,20 +29,38 @@ from nasaq.lang.scl import ast
 from nasaq.lang.stl.diag import span
 
 _BODIES = frozenset({"body", "orelse"})  # statements; a branch's condition or labels are not
+_NOTHING: frozenset[str] = frozenset()
 # A STRUCT in a STRUCT is two tree levels (the member's declaration, its type), plus the
 # declaration's own name and type nodes.
 _TYPE_LEVELS = 2 * MAX_STRUCT_NESTING + 2
 
 
-def _fields(kind: Any) -> tuple[str, ...]:
-    return tuple(f.name for f in dataclasses.fields(kind) if f.name != "loc")
+def _getter(kind: Any, skip: frozenset[str]) -> Callable[[Any], tuple[Any, ...]] | None:
+    """What of a node of ``kind`` may nest (its fields but ``loc`` and ``skip``), as one call
+    that gives them as a tuple; None for no dataclass or no such field."""
+    if not dataclasses.is_dataclass(kind):
+        return None
+    names = [f.name for f in dataclasses.fields(kind) if f.name != "loc" and f.name not in skip]
+    if not names:
+        return None
+    if len(names) == 1:
+        name = names[0]
+        return lambda node: (getattr(node, name),)
+    found: Callable[[Any], tuple[Any, ...]] = attrgetter(*names)
+    return found
 
 
 # A statement on one line shorter than this holds no expression deeper than the limit (a tree
 # level takes at least two thirds of a character: ``f(x)`` is a call, an argument and a name)
 # and no number that long: its expressions need not be walked.
 _SHORT = min(MAX_EXPRESSION_DEPTH * 2 // 3, MAX_NUMBER_DIGITS)
-_CHILDREN: dict[type, tuple[str, ...] | None] = {}  # per node type, the fields that may nest
+# The same holds for any node the walk meets: one on one line narrower than ``_ROOM[limit -
+# depth]`` characters cannot reach the limit below it (nor hold a number of MAX_NUMBER_DIGITS),
+# so the walk leaves it; a node without a place of its own (width 0, made by the compiler)
+# is walked. This keeps the walk to a few nodes per long statement.
+_ROOM = [max(0, min((left - 1) * 2 // 3, MAX_NUMBER_DIGITS)) for left in range(200)]
+# per node type and whether statement bodies count: ``_getter``
+_CHILDREN: dict[tuple[type, frozenset[str]], Callable[[Any], tuple[Any, ...]] | None] = {}
 _LEAVES = frozenset({str, int, bool, float, type(None), ast.Loc})
 
 
@@ -61,10 +81,11 @@ class _Limiter:
         ``limit`` (SCL152 for types, else SCL151) or a long number (SCL153). Without
         ``statements`` the bodies of control statements are left out (``body`` walks them).
         It runs on every statement of every compile, so it is written for speed."""
-        skip = _BODIES if not statements else frozenset()
+        skip = _BODIES if not statements else _NOTHING
         level: list[Any] = root if type(root) is list else [root]
         depth = 0
         while level:
+            room = _ROOM[limit - depth] if 0 <= limit - depth < len(_ROOM) else 0
             below: list[Any] = []
             add = below.append
             for node in level:
@@ -77,21 +98,24 @@ class _Limiter:
                     if len(text) > MAX_NUMBER_DIGITS and _digits(text) > MAX_NUMBER_DIGITS:
                         return "SCL153", node
                     continue
-                names = _CHILDREN.get(kind)
-                if names is None:
-                    if kind in _CHILDREN or not dataclasses.is_dataclass(kind):
-                        _CHILDREN[kind] = None
+                key = (kind, skip)
+                children = _CHILDREN.get(key)
+                if children is None:
+                    if key in _CHILDREN:
                         continue
-                    names = _CHILDREN[kind] = _fields(kind)
+                    children = _CHILDREN[key] = _getter(kind, skip)
+                    if children is None:
+                        continue
                 if depth > limit:
                     return ("SCL152" if statements else "SCL151"), node
-                for name in names:
-                    if name not in skip:
-                        value = getattr(node, name)
-                        if type(value) is list:
-                            below.extend(value)  # a list's items are its owner's children
-                        elif type(value) not in _LEAVES:
-                            add(value)
+                loc = node.loc  # every node of a block has one (``ast.SourceFile`` is none)
+                if loc[0] == loc[2] and 0 < loc[3] - loc[1] < room:
+                    continue
+                for value in children(node):
+                    if type(value) is list:
+                        below.extend(value)  # a list's items are its owner's children
+                    elif type(value) not in _LEAVES:
+                        add(value)
             level = below
             depth += 1
         return None
@@ -114,16 +138,17 @@ class _Limiter:
         while stack:
             statements, depth = stack.pop()
             for k, stmt in enumerate(statements):
-                if isinstance(stmt, ast.Bad):
+                kind = type(stmt)
+                if kind is ast.Bad:
                     continue
                 loc = stmt.loc
-                short = loc.line == loc.end_line and loc.end_column - loc.column < _SHORT
+                short = loc[0] == loc[2] and loc[3] - loc[1] < _SHORT
                 if not short and self.statement_problem(stmt):
                     statements[k] = ast.Bad(stmt.loc)
                     continue
-                inner = _bodies(stmt)
-                if not inner:
+                if kind not in _CONTROL:
                     continue
+                inner = _bodies(stmt)
                 if depth > MAX_STATEMENT_NESTING:
                     self.report("SCL150", stmt.loc, limit=MAX_STATEMENT_NESTING)
                     statements[k] = ast.Bad(stmt.loc)
@@ -165,6 +190,9 @@ class _Limiter:
             self.report("SCL152", block.loc, limit=MAX_STRUCT_NESTING)
             block.return_type = ast.NamedType("VOID", loc=block.loc)
         self.body(block.code)
+
+
+_CONTROL = frozenset({ast.If, ast.Case, ast.For, ast.While, ast.Repeat, ast.Region})
 
 
 def _bodies(stmt: Any) -> list[list[Any]]:

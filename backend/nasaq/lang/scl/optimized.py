@@ -26,6 +26,7 @@ from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.stl.diag import problem
 
 if TYPE_CHECKING:
+    from nasaq.lang.scl import ast
     from nasaq.lang.scl.bind import SclBlock, SclIndex
 
 ATTRIBUTE = "s7_optimized_access"
@@ -54,6 +55,15 @@ def declare(index: SclIndex, info: SclBlock) -> None:
             index.diagnostics.append(
                 problem("SCL500", info.file, attribute.loc, what=what, profile=index.profile)
             )
+
+
+def marked(node: ast.Block) -> bool:
+    """Whether the source marks the block optimized (``S7_Optimized_Access := 'TRUE'``): a
+    source for the S7-1200/1500 family, whatever the profile."""
+    return any(
+        a.name.casefold() == ATTRIBUTE and a.value.strip().upper() == "TRUE"
+        for a in node.attributes
+    )
 
 
 def db_label(index: SclIndex, number: int) -> str:

@@ -16,7 +16,7 @@ from __future__ import annotations
 from nasaq.diagnostics import Diagnostic, Severity
 from nasaq.ir import BlockKind
 from nasaq.lang.profiles import DEFAULT_PROFILE
-from nasaq.lang.scl import ast
+from nasaq.lang.scl import ast, optimized
 from nasaq.lang.scl.bind import SclBlock, SclIndex
 from nasaq.lang.scl.lower import lower_index
 from nasaq.lang.scl.typecheck import check_index
@@ -53,6 +53,16 @@ class SclUnit:
                 block.name, address, parse_address(address), "", "", block.file, where.line
             )
         return list(self.index.diagnostics)
+
+    def optimized_dbs(self) -> dict[int, str]:
+        """The optimized DBs (``scl.optimized``) by number, with the name a message shows."""
+        return {
+            block.number: optimized.db_label(self.index, block.number)
+            for block in self.index
+            if block.kind is BlockKind.DB
+            and not block.external
+            and optimized.optimized_db(self.index, block.number)
+        }
 
     def attach(self) -> None:
         for external, info in self.externals:

@@ -31,7 +31,12 @@ Classic's "Generate source" write them; ``test_stl_tia_export``, ``test_stl_clas
   ``AUTHOR``/``FAMILY``/``NAME``/``VERSION : 0.1``, ``KNOW_HOW_PROTECT``, ``NON_RETAIN`` ...;
   ``S7_Optimized_Access := 'TRUE'`` is ``STL500`` under S7-300/400 (only the S7-1200/1500
   family has optimized blocks); under S7-1500 such a block is laid out as a standard one, which
-  symbolic STL accesses cannot tell apart;
+  symbolic STL accesses cannot tell apart; an absolute address in an optimized DB (``L DB10.DBW
+  0``, ``L "Data".DBW 0``) is ``STL604``, as in TIA;
+- constants by type name as TIA writes them (``L INT#5``, ``L DINT#-7``, ``L WORD#16#FF``,
+  ``L REAL#1.5``: what ``L 5``, ``L L#-7``, ``L W#16#FF``, ``L 1.5`` load); ``UDINT#``, ``UINT#``,
+  ``USINT#``, ``SINT#`` are ``STL500`` under S7-300/400, the 64-bit ``LREAL#``, ``LINT#`` ...
+  ``STL603`` (no accumulator holds them);
 - declarations in TIA spelling (``Bool``, ``Int``, ``S5Time``, ``Date_And_Time``, ``String[20]``,
   ``Array[0..3] of Int``, ``Struct ... END_STRUCT;``, ``"Udt"``, ``TON``/``CTU`` ... for the
   IEC SFBs), member attributes (``{ S7_SetPoint := 'True'}``, ``{ExternalAccessible :=

@@ -20,7 +20,7 @@ from nasaq.lang.stl import ast
 from nasaq.lang.stl.addresses import AddressError, Parsed, parse_address
 from nasaq.lang.stl.diag import problem
 from nasaq.lang.stl.symbols import SymbolTable
-from nasaq.lang.system_blocks import SFB_INTERFACES
+from nasaq.lang.system_types import system_fb_sections
 from nasaq.lang.tia_system import tia_system
 from nasaq.lang.types import (
     ArrayType,
@@ -107,6 +107,10 @@ class ProgramIndex:
         self.layout = Layout(self._expand)
         self.diagnostics: list[Diagnostic] = []
         self._db_roots: dict[tuple[BlockKind, int], Slot] = {}
+        # the optimized DBs of the SCL sources (S7-1500), which STL reaches by name only (STL604),
+        # and the files whose blocks the SCL compiler wrote (they address those DBs absolutely)
+        self.optimized_dbs: dict[int, str] = {}
+        self.scl_files: set[str] = set()
 
     # ---- block ids --------------------------------------------------------------------------
 
@@ -336,15 +340,7 @@ class ProgramIndex:
 
     def _expand(self, block: BlockType) -> Expansion:
         if block.kind == "SFB":
-            interface = SFB_INTERFACES.get(block.number)
-            if interface is None:
-                return None
-            sections: dict[str, list[Field]] = {}
-            for section, name, type_name in interface:
-                found = elementary(type_name)
-                assert found is not None
-                sections.setdefault(section, []).append(Field(name, found))
-            return list(sections.items())
+            return system_fb_sections(block.number)
         info = self.blocks.get((BlockKind(block.kind), block.number))
         if info is None:
             return None

@@ -27,6 +27,7 @@ from nasaq.ir import (
     MultiInstance,
     Operand,
     ParamRef,
+    RegisterIndirect,
     TimerRef,
 )
 from nasaq.lang.profiles import is_s7_1500
@@ -35,7 +36,8 @@ from nasaq.lang.stl.bind import Param
 from nasaq.lang.stl.build import unquote_chars
 from nasaq.lang.stl.constants import POINTER_AREAS
 from nasaq.lang.stl.resolve import Resolved, Resolver, Scope, cache_key
-from nasaq.lang.system_blocks import SFB_INTERFACES
+from nasaq.lang.system_blocks import SFB_INTERFACES, SFB_NAMES, s7_1500_only
+from nasaq.lang.system_types import parse as parse_type
 from nasaq.lang.types import (
     ArrayType,
     BlockType,
@@ -43,7 +45,6 @@ from nasaq.lang.types import (
     Elementary,
     StringType,
     StructType,
-    elementary,
     is_reference,
     type_text,
     width_of,
@@ -116,7 +117,11 @@ def fits(formal: DataType, actual: Resolved, section: str) -> bool:
     if isinstance(operand, MultiInstance):
         return False
     if section != "IN" and isinstance(operand, Constant):
-        return False
+        # an ANY in/out or output takes a pointer constant (STEP 7: ``ADDR_1 := P#DB10.DBX0.0
+        # BYTE 10`` of GET, SFB 14; ``OUT := P#M 20.0 BYTE 2`` of ATH, FC 94); any other
+        # constant has no place to be written back to
+        any_pointer = isinstance(formal, Elementary) and formal.name == "ANY"
+        return any_pointer and operand.type is ConstType.POINTER
     if isinstance(formal, StringType):
         if isinstance(operand, Constant):
             return (
@@ -178,9 +183,8 @@ def describe(actual: Resolved) -> str:
 def _system_parameters(number: int) -> list[Param]:
     params: list[Param] = []
     for section, name, type_name in SFB_INTERFACES[number]:
-        found = elementary(type_name)
-        if section != "STAT" and found is not None:
-            params.append(Param(name, section, found, len(params)))
+        if section != "STAT":
+            params.append(Param(name, section, parse_type(type_name), len(params)))
     return params
 
 
@@ -342,6 +346,11 @@ class CallLowerer:
         if info is not None:
             return info.params
         if block.kind is BlockKind.SFB and block.number in SFB_INTERFACES:
+            profile = self.scope.index.profile
+            if s7_1500_only(block.number) and not is_s7_1500(profile):  # PID_Compact ...
+                what = SFB_NAMES[block.number]
+                self.scope.report("STL500", where, what=what, profile=profile)
+                return False
             return _system_parameters(block.number)
         if block.kind in (BlockKind.SFC, BlockKind.SFB):
             return None
@@ -352,9 +361,21 @@ class CallLowerer:
         """What an ANY parameter gets. A declared variable at a fixed address (``"DB".x``,
         ``P#DB42.x``, a symbol with a type) becomes the ANY constant STEP 7 makes of it, so its
         type reaches the CPU; anything else (``M 12.2``, ``DB50.DBD 10``, locals) is passed as
-        it is and its access width tells the type."""
+        it is and its access width tells the type. An FB's own variable reached through AR2
+        (``DI [AR2, P#4.0]``, SCL's instance data) is ``P#DI 4.0 ...`` too: the CPU adds AR2's
+        offset (a multi-instance's place in the instance DB) when it builds the ANY."""
         if isinstance(operand, Constant) and actual.pointee is not None:
             return self.any_constant(operand, actual.pointee, widest=True)
+        if (
+            isinstance(operand, RegisterIndirect)
+            and operand.register == 2
+            and operand.area is Area.DI
+            and actual.type is not None
+        ):
+            bits = operand.offset_bits
+            text = f"P#DI {bits >> 3}.{bits & 7}"
+            pointer = Constant(ConstType.POINTER, (0x85 << 24) | bits, bits, text)
+            return self.any_constant(pointer, actual.type)
         if isinstance(operand, Direct) and actual.type is not None:
             bits = operand.byte * 8 + operand.bit
             if operand.db is not None:
@@ -363,6 +384,12 @@ class CallLowerer:
             elif operand.area in (Area.I, Area.Q, Area.M):
                 text = f"P#{operand.area.value} {operand.byte}.{operand.bit}"
                 area = POINTER_AREAS[operand.area.value]
+            elif operand.area is Area.L:  # the caller's local data: V as the callee sees it
+                text = f"P#V {operand.byte}.{operand.bit}"
+                area = 0x87
+            elif operand.area is Area.DI:  # the CPU puts the instance DB's number in
+                text = f"P#DI {operand.byte}.{operand.bit}"
+                area = 0x85
             else:
                 return operand
             pointer = Constant(ConstType.POINTER, (area << 24) | bits, bits, text)

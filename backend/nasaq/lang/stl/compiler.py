@@ -302,20 +302,25 @@ class _Compiler:
         self.diagnostics += number_blocks(plain, self.symbols, used, self.profile, self.unnumbered)
         self._publish_symbols()
 
-    def check_access(self, node: ast.BlockNode, file: str) -> None:
+    def check_access(self, node: ast.BlockNode, file: str, info: BlockInfo) -> None:
         """``{ S7_Optimized_Access := 'TRUE' }``: only the S7-1200/1500 family has optimized
-        blocks (there Nasaq lays them out as standard ones: STL reaches them symbolically)."""
-        if is_s7_1500(self.profile):
-            return
+        blocks (there Nasaq lays them out as standard ones: STL reaches them symbolically, an
+        absolute address in an optimized DB is STL604)."""
         for item in node.head:
-            if isinstance(item, ast.AttributesNode):
-                for name, value in item.values.items():
-                    if name.casefold() == "s7_optimized_access" and value.upper() == "TRUE":
-                        what = "an optimized block"
-                        where = item.loc
-                        self.diagnostics.append(
-                            problem("STL500", file, where, what=what, profile=self.profile)
-                        )
+            if not isinstance(item, ast.AttributesNode):
+                continue
+            for name, value in item.values.items():
+                if name.casefold() != "s7_optimized_access" or value.upper() != "TRUE":
+                    continue
+                if not is_s7_1500(self.profile):
+                    what = "an optimized block"
+                    self.diagnostics.append(
+                        problem("STL500", file, item.loc, what=what, profile=self.profile)
+                    )
+                elif info.kind is BlockKind.DB:
+                    label = f"DB {info.number}"
+                    shown = f'"{info.name}" ({label})' if info.name else label
+                    self.index.optimized_dbs[info.number] = shown
 
     def register(self) -> list[tuple[BlockInfo, _File]]:
         registered: list[tuple[BlockInfo, _File]] = []
@@ -340,7 +345,7 @@ class _Compiler:
                 info = self.index.register(node, file.name, file.language)
                 if info is not None:
                     registered.append((info, file))
-                    self.check_access(node, file.name)
+                    self.check_access(node, file.name, info)
         from nasaq.lang.scl.project import SclUnit  # SCL builds on this package
 
         unit = SclUnit(self.scl_sources, self.symbols, self.profile) if self.scl_sources else None
@@ -352,6 +357,8 @@ class _Compiler:
             unit.attach()
             blocks, problems = unit.lower()
             self.diagnostics += problems
+            self.index.optimized_dbs.update(unit.optimized_dbs())
+            self.index.scl_files = {name for name, _ in blocks}
             files: dict[str, _File] = {}
             self.generated = blocks
             generated: list[tuple[BlockInfo, _File]] = []
@@ -426,8 +433,12 @@ class _Compiler:
         interface += variables(self.index.temp_layout(info))
         block.interface = interface
         block.temp_bytes = info.temp_bits // 8
+        self.check_temp(info, block.temp_bytes)
         scope = Scope(self.index, info, info.language, self.test_ops)
-        shared = self.shared.setdefault(info.language, {})
+        group = info.language
+        if self.index.optimized_dbs and info.file in self.index.scl_files:
+            group += " scl"  # its absolute addresses in optimized DBs are no STL604 for STL's
+        shared = self.shared.setdefault(group, {})
         lowerer = CodeLowerer(scope, file.lines, self.auto, shared, file.elements)
         lowered = lowerer.lower(info.node.code)
         apply_code(block, lowered)
@@ -467,6 +478,20 @@ class _Compiler:
         builder.actual_values(slots, assigns)
         block.data = bytes(builder.data)
         self.diagnostics += builder.diagnostics
+
+    def check_temp(self, info: BlockInfo, size: int) -> None:
+        """STL605 for a block whose local data (its VAR_TEMP and the temporaries the SCL compiler
+        adds) exceed the L stack the profile's CPU has per priority class: STEP 7 compiles such
+        a block, but the CPU could never call it (it goes to STOP, SIM509), so Nasaq says so
+        when compiling (COMPATIBILITY.md, "L stack")."""
+        from nasaq.cpu.profile import Profile  # the CPU's figures (lang does not load the CPU)
+
+        limit = Profile(self.profile).lstack_bytes
+        if size > limit:
+            label = f"{info.kind.value} {info.number}"
+            name = f'"{info.name}" ({label})' if info.name else label
+            params = {"block": name, "size": size, "limit": limit, "profile": self.profile}
+            self.diagnostics.append(problem("STL605", info.file, info.node.loc, **params))
 
     def db_too_large(self, file: str, loc: ast.Loc | None, label: str, size_bits: int) -> bool:
         """STL152 for a data block larger than the profile's limit (``limits.max_db_bytes``):

@@ -283,9 +283,60 @@ def pointer(text: str) -> Constant:
     return Constant(ConstType.POINTER, pattern, (byte << 3) | bit, text)
 
 
+# TIA Portal's notation of a constant by its type name (``INT#5``, ``DINT#-7``, ``WORD#16#FF``,
+# ``UDINT#16#FFFF``, ``REAL#1.5``): the value STEP 7's own notation gives (``L 5``, ``L L#-7``,
+# ``L W#16#FF``, ``L DW#16#FFFF``, ``L 1.5``). A value in base notation is the bit pattern.
+# type -> (what the pattern is, lowest and highest value in decimal, width in bits)
+IEC_TYPED: dict[str, tuple[ConstType, int, int, int]] = {
+    "INT": (ConstType.INT, -(2**15), 2**15 - 1, 16),
+    "DINT": (ConstType.DINT, -(2**31), 2**31 - 1, 32),
+    "BYTE": (ConstType.BYTE, 0, 2**8 - 1, 8),
+    "WORD": (ConstType.WORD, 0, 2**16 - 1, 16),
+    "DWORD": (ConstType.DWORD, 0, 2**32 - 1, 32),
+    # the S7-1200/1500 ones (``S7_1500_TYPED``: STL500 under S7-300/400)
+    "SINT": (ConstType.INT, -(2**7), 2**7 - 1, 8),
+    "USINT": (ConstType.BYTE, 0, 2**8 - 1, 8),
+    "UINT": (ConstType.WORD, 0, 2**16 - 1, 16),
+    "UDINT": (ConstType.DWORD, 0, 2**32 - 1, 32),
+}
+# 64 bits, more than an accumulator holds: STL603 (STL500 first under S7-300/400)
+WIDE_TYPED = frozenset({"LINT", "ULINT", "LWORD", "LREAL", "LTIME"})
+S7_1500_TYPED = frozenset({"SINT", "USINT", "UINT", "UDINT"}) | WIDE_TYPED
+
+
+def typed_prefix(text: str) -> str:
+    """The type name before the first ``#`` of a typed constant, in capitals."""
+    return text.partition("#")[0].upper()
+
+
+def _iec_typed(prefix: str, body: str, text: str) -> Constant:
+    kind, low, high, bits = IEC_TYPED[prefix]
+    base_text, sign, digits = body.partition("#")
+    if sign:
+        if base_text not in ("2", "8", "16"):
+            raise _bad(text, f"write {prefix}#16#... with base 2, 8 or 16")
+        pattern = parse_int(digits, int(base_text), text)
+        if pattern >> bits:
+            raise _range(text, prefix)
+        value = pattern - (1 << bits) if low < 0 and pattern >> (bits - 1) else pattern
+    else:
+        value = parse_int(body, 10, text)
+        if not low <= value <= high:
+            raise _range(text, prefix)
+    width = 16 if kind is ConstType.INT else 32  # INT and SINT load as a 16-bit immediate
+    return Constant(kind, value & ((1 << width) - 1), value, text)
+
+
 def typed(text: str) -> Constant:
     prefix, _, body = text.partition("#")
     prefix = prefix.upper()
+    if prefix in IEC_TYPED:
+        return _iec_typed(prefix, body, text)
+    if prefix == "REAL":
+        number = real(body)
+        return Constant(number.type, number.pattern, number.value, text)
+    if prefix in WIDE_TYPED:
+        raise ConstantError("STL603", text=text, type=prefix)
     if prefix == "L":
         value = parse_int(body, 10, text)
         if not -(2**31) <= value < 2**31:

@@ -26,20 +26,27 @@ from nasaq.lang.stl.symbols import Symbol, SymbolTable
 
 LIBRARY_FILE = "<TI-S7 Converting Blocks>"
 
-_SCALE = """\
-FUNCTION FC {number} : WORD
-TITLE = SCALE: an analog input value (INT) in engineering units (REAL)
+
+def _converter(name: str, title: str, types: tuple[str, str], norm: str, formula: str) -> str:
+    """The STL text of SCALE or UNSCALE: the bounds K1/K2, ``norm`` (leaves the value to clamp
+    in #X, between #K1 and #K2 for SCALE, 0.0 and 1.0 for UNSCALE), the clamp with RET_VAL
+    W#16#0008, then ``formula`` from #X to the OUT value in ACCU1. ``{{number}}`` stays a
+    placeholder for ``sources``."""
+    low, high = ("#K1", "#K2") if name == "SCALE" else ("0.000000e+000", "1.000000e+000")
+    return f"""\
+FUNCTION FC {{number}} : WORD
+TITLE = {name}: {title}
 FAMILY : CONVERT
-NAME : SCALE
+NAME : {name}
 VERSION : 2.1
 VAR_INPUT
-  IN : INT;
+  IN : {types[0]};
   HI_LIM : REAL;
   LO_LIM : REAL;
   BIPOLAR : BOOL;
 END_VAR
 VAR_OUTPUT
-  OUT : REAL;
+  OUT : {types[1]};
 END_VAR
 VAR_TEMP
   K1 : REAL;
@@ -58,11 +65,9 @@ UNI:  L     2.764800e+004;
       T     #K2;
       L     W#16#0;
       T     #RET_VAL;
-      L     #IN;
-      ITD   ;
-      DTR   ;
-      T     #X;
-      L     #K2;
+{norm}
+      L     #X;
+      L     {high};
       >R    ;
       JCN   NHI;
       T     #X;
@@ -70,13 +75,30 @@ UNI:  L     2.764800e+004;
       T     #RET_VAL;
       JU    CALC;
 NHI:  L     #X;
-      L     #K1;
+      L     {low};
       <R    ;
       JCN   CALC;
       T     #X;
       L     W#16#8;
       T     #RET_VAL;
-CALC: L     #K2;
+CALC: NOP   0;
+{formula}
+      T     #OUT;
+END_FUNCTION
+"""
+
+
+_SCALE = _converter(
+    "SCALE",
+    "an analog input value (INT) in engineering units (REAL)",
+    ("INT", "REAL"),
+    """\
+      L     #IN;
+      ITD   ;
+      DTR   ;
+      T     #X;""",
+    """\
+      L     #K2;
       L     #K1;
       -R    ;
       T     #SPAN;
@@ -92,77 +114,34 @@ CALC: L     #K2;
       L     #X;
       *R    ;
       L     #LO_LIM;
-      +R    ;
-      T     #OUT;
-END_FUNCTION
-"""
+      +R    ;""",
+)
 
-_UNSCALE = """\
-FUNCTION FC {number} : WORD
-TITLE = UNSCALE: a value in engineering units (REAL) as an analog output value (INT)
-FAMILY : CONVERT
-NAME : UNSCALE
-VERSION : 2.1
-VAR_INPUT
-  IN : REAL;
-  HI_LIM : REAL;
-  LO_LIM : REAL;
-  BIPOLAR : BOOL;
-END_VAR
-VAR_OUTPUT
-  OUT : INT;
-END_VAR
-VAR_TEMP
-  K1 : REAL;
-  K2 : REAL;
-  R : REAL;
-END_VAR
-BEGIN
-      L     0.000000e+000;
-      T     #K1;
-      A     #BIPOLAR;
-      JCN   UNI;
-      L     -2.764800e+004;
-      T     #K1;
-UNI:  L     2.764800e+004;
-      T     #K2;
-      L     W#16#0;
-      T     #RET_VAL;
+_UNSCALE = _converter(
+    "UNSCALE",
+    "a value in engineering units (REAL) as an analog output value (INT)",
+    ("REAL", "INT"),
+    """\
       L     #HI_LIM;
       L     #LO_LIM;
       -R    ;
-      T     #R;
+      T     #SPAN;
       L     #IN;
       L     #LO_LIM;
       -R    ;
-      L     #R;
+      L     #SPAN;
       /R    ;
-      T     #R;
-      L     0.000000e+000;
-      <R    ;
-      JCN   NLO;
-      T     #R;
-      L     W#16#8;
-      T     #RET_VAL;
-      JU    CALC;
-NLO:  L     #R;
-      L     1.000000e+000;
-      >R    ;
-      JCN   CALC;
-      T     #R;
-      L     W#16#8;
-      T     #RET_VAL;
-CALC: L     #K2;
+      T     #X;""",
+    """\
+      L     #K2;
       L     #K1;
       -R    ;
-      L     #R;
+      L     #X;
       *R    ;
       L     #K1;
       +R    ;
-      RND   ;
-      T     #OUT;
-END_FUNCTION
-"""
+      RND   ;""",
+)
 
 BLOCKS = {"SCALE": (105, _SCALE), "UNSCALE": (106, _UNSCALE)}
 

@@ -214,6 +214,23 @@ class DataBuilder:
             if isinstance(slot.initial, list) and slot.initial:
                 first = slot.initial[0]
                 self.assign(slot, slot.initial, first.loc)
+            elif isinstance(slot.initial, bool | int | float):  # a system block's member
+                self.preset(slot, slot.initial)
+
+    def preset(self, slot: Slot, value: bool | int | float) -> None:
+        """An initial value a system block's interface gives (``system_types.initial``)."""
+        byte, bit = divmod(slot.offset_bits, 8)
+        kind = slot.type.name if isinstance(slot.type, Elementary) else ""
+        if kind == "BOOL":
+            mask = 1 << bit
+            self.data[byte] = (self.data[byte] | mask) if value else (self.data[byte] & ~mask)
+        elif kind in ("REAL", "LREAL"):
+            self.data[byte : byte + slot.size_bits // 8] = struct.pack(
+                ">f" if kind == "REAL" else ">d", float(value)
+            )
+        elif kind:
+            size = slot.size_bits // 8
+            self.data[byte : byte + size] = (int(value) % (1 << 8 * size)).to_bytes(size, "big")
 
     def _elements(self, slot: Slot, expand: bool = False) -> list[Slot]:
         """The element slots of an array (``expand``: with their members laid out)."""

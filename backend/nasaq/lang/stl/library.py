@@ -129,4 +129,12 @@ def block_node(function: LibraryFunction, number: int) -> ast.BlockNode:
         ast.HeaderPropNode("NAME", function.name, _WHERE),
         ast.VarSectionNode("VAR_INPUT", inputs, _WHERE),
     ]
+    for section, heading in (("OUT", "VAR_OUTPUT"), ("IN_OUT", "VAR_IN_OUT")):
+        others = [
+            ast.VarDeclNode(name, _type(data_type), None, {}, _WHERE)
+            for kind, name, data_type in function.others
+            if kind == section
+        ]
+        if others:
+            node.head.append(ast.VarSectionNode(heading, others, _WHERE))
     return node

@@ -41,12 +41,14 @@ from nasaq.ir import (
     Width,
 )
 from nasaq.lang.layout import Slot
+from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.stl import ast, constants
 from nasaq.lang.stl.addresses import BLOCK_PREFIXES, AddressError, Parsed, parse_address, split_area
 from nasaq.lang.stl.bind import BlockInfo, ProgramIndex
 from nasaq.lang.stl.build import unquote_chars
 from nasaq.lang.stl.diag import problem
 from nasaq.lang.stl.mnemonics import NAMES
+from nasaq.lang.tia_system import tia_system
 from nasaq.lang.types import BlockType, DataType, Elementary, Field, StringType, width_of
 
 REGISTERS = frozenset({"STW", "AR1", "AR2", "DBNO", "DBLG", "DINO", "DILG"})
@@ -212,7 +214,18 @@ class Resolver:
         parsed = self.parsed_address(text, where)
         if parsed is None or not self.system_block_allowed(parsed, where, shown):
             return None
+        if parsed.db is not None and self.optimized_absolute(parsed.db, where, shown):
+            return None
         return Resolved(from_parsed(parsed), None, shown)
+
+    def optimized_absolute(self, db: int, where: ast.Loc, text: str) -> bool:
+        """STL604 for an absolute address in an optimized DB (TIA: it has none, STL names its
+        variables); the code the SCL compiler writes for its own DBs is not checked."""
+        index = self.scope.index
+        if db not in index.optimized_dbs or self.scope.file in index.scl_files:
+            return False
+        self.scope.report("STL604", where, text=text, db=index.optimized_dbs[db])
+        return True
 
     def system_block_allowed(self, parsed: Parsed, where: ast.Loc, text: str) -> bool:
         """awlsim's own system blocks (``SFC -3`` ...) are test instructions."""
@@ -228,6 +241,12 @@ class Resolver:
             return self.local_pointer(node, text)
         if node.kind == "POINTER" and _DB_VARIABLE_POINTER.match(node.text):
             return self.db_variable_pointer(node, text)
+        if node.kind == "TYPED" and not is_s7_1500(self.scope.index.profile):
+            prefix = constants.typed_prefix(node.text)
+            if prefix in constants.S7_1500_TYPED:  # STL stays S7-300/400 there
+                what = f"{prefix}#"
+                self.scope.report("STL500", node.loc, what=what, profile=self.scope.index.profile)
+                return None
         try:
             raw = unquote_chars(node.text) if node.kind == "CHARS" else None
             constant = constants.parse_literal(node.kind, node.text, raw)
@@ -301,6 +320,10 @@ class Resolver:
                 return self.symbol_target(symbol.parsed, symbol.type, [], node.loc, text)
             if self.declares_locally(name):  # STEP 7 Classic: a local name without its #
                 return self.local(ast.SymbolNode(node.name, True, [], node.loc), text)
+            system = tia_system(node.name)  # CALL PNIO_RECV: an instruction TIA writes bare
+            if system is not None:
+                self.scope.report("STL920", node.loc, name=system)
+                return None
         self.scope.report("STL205", node.loc, name=text)
         return None
 
@@ -618,6 +641,8 @@ class Resolver:
                 return None
             if found.kind != "memory" or found.area is not Area.DB or found.db is not None:
                 self.scope.report("STL216", where, name=text.split(".")[0], member=first.text)
+                return None
+            if self.optimized_absolute(parsed.number, where, text):
                 return None
             operand = Direct(
                 Area.DB, found.width or Width.BYTE, found.byte, found.bit, parsed.number

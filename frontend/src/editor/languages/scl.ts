@@ -58,6 +58,15 @@ export const SCL_STANDARD_FUNCTIONS: readonly string[] = [
   // TIA Portal's names (BCD, rounding, Unicode text)
   'BCD16_TO_INT', 'BCD32_TO_DINT', 'BCD_TO_INT', 'CEIL', 'DINT_TO_BCD32', 'FLOOR', 'INT_TO_BCD',
   'INT_TO_BCD16', 'STRING_TO_WSTRING', 'WSTRING_TO_STRING',
+  // TIA Portal's text instructions and conversions (S7-1200/1500)
+  'CHAR_TO_WSTRING', 'DTL_TO_DATE', 'DTL_TO_TOD', 'STRG_VAL', 'STRING_TO_WCHAR', 'VAL_STRG',
+  'WCHAR_TO_STRING', 'WCHAR_TO_WSTRING', 'WSTRING_TO_CHAR', 'WSTRING_TO_WCHAR',
+  // TIA Portal's VARIANT and ARRAY[*] instructions (S7-1200/1500)
+  'COUNTOFELEMENTS', 'DESERIALIZE', 'IS_ARRAY', 'LOWER_BOUND', 'MOVE_BLK_VARIANT', 'SERIALIZE',
+  'TYPEOF', 'TYPEOFELEMENTS', 'UPPER_BOUND', 'VARIANTGET', 'VARIANTPUT',
+  // TIA Portal's DB_ANY and direct memory instructions (S7-1200/1500)
+  'DB_ANY_TO_UINT', 'PEEK', 'PEEK_BOOL', 'PEEK_DWORD', 'PEEK_WORD', 'POKE', 'POKE_BOOL',
+  'UINT_TO_DB_ANY',
 ];
 
 // The address and literal terminals of grammars/scl.lark, as JavaScript regular expressions.

@@ -37,7 +37,7 @@ PIECES = [
     *["16#", "2#", "T#", "INT#", "DB", "DBX", "PIW", "END_IF", "NAME", "VAR_TEMP", "REGION", "(*"],
     *["*)", "/*", "*/", "//", "1.5", "e3", "-", " [", " :", " 1.2", ":=", "=>", "..", "**"],
     *["AUTHOR :", "name:", "KNOW_HOW_PROTECT", "read_only", "VAR_INPUT CONSTANT", "REGION x"],
-    *["%X3", "%w1", "#k..", '"K",', "END_REGION t"],
+    *["%X3", "%w1", "#k..", '"K",', "END_REGION t", "%IW", ":P", "%qb"],
 ]
 
 

@@ -93,7 +93,7 @@ def test_each_type_needs_the_s7_1500_profile_in_stl(type_name: str) -> None:
     ("declaration", "what"),
     [("ARRAY[*] OF INT", "ARRAY[*]"), ("VARIANT", "VARIANT"), ("DB_ANY", "DB_ANY")],
 )
-def test_array_star_variant_and_db_any_are_refused_with_their_own_codes(
+def test_array_star_variant_and_db_any_need_the_s7_1500_profile(
     declaration: str, what: str
 ) -> None:
     text = (
@@ -102,11 +102,7 @@ def test_array_star_variant_and_db_any_are_refused_with_their_own_codes(
     classic = _codes(text, "S7-300")
     assert [c[0] for c in classic] == ["SCL500"]
     assert classic[0][3].startswith(f"{what} needs the S7-1200/1500 profile")
-    modern = _codes(text, "S7-1500")
-    assert [c[0] for c in modern] == ["SCL501"]
-    assert modern[0][3] == (
-        f"{what} is valid for the S7-1200/1500 profile, but Nasaq cannot run it yet."
-    )
+    assert _codes(text, "S7-1500") == []  # they run there (test_scl_variant.py)
 
 
 # ---- ranges, conversions, result types -----------------------------------------------------------
@@ -206,8 +202,11 @@ def test_an_untyped_constant_takes_the_other_operands_type() -> None:
         "FUNCTION F1 : VOID\nVAR_TEMP\n  u : UINT;\n  s : SINT;\nEND_VAR\nBEGIN\n"
         "  u := u + 2;\n  s := s - 1;\n  u := u + 70000;\nEND_FUNCTION\n"
     )
-    # u + 70000 does not fit a UINT: the sum is a DINT, which a UINT does not take implicitly
-    assert [c[:3] for c in _codes(text, "S7-1500")] == [("SCL213", 9, 8)]
+    # u + 70000 does not fit a UINT: the sum is a DINT, which TIA stores into the UINT
+    # implicitly (IEC check off) keeping its low bits, with the warning SCL705
+    assert _codes(text, "S7-1500") == []
+    found = compile_sources([SourceFile("t.scl", text)], profile="S7-1500").diagnostics
+    assert [(d.code, d.span.line) for d in found if d.span] == [("SCL705", 9)]
 
 
 # ---- lowering ------------------------------------------------------------------------------------

@@ -312,14 +312,14 @@ def test_a_system_instruction_nasaq_does_not_simulate_is_named_as_such() -> None
     source = """FUNCTION_BLOCK FB1
 VAR t : REAL; d : DINT; END_VAR
 BEGIN
-  d := RUNTIME(t);
-  d := d + RUNTIME(t);
-  VAL_STRG(IN := 1.0, OUT => d);
+  d := GET_ERR_ID(t);
+  d := d + GET_ERR_ID(t);
+  S_CONV(IN := 1.0, OUT => d);
 END_FUNCTION_BLOCK
 """
     result = compile_sources([SourceFile("prog.scl", source)], profile="S7-1500")
     found = [(d.code, d.span.line, d.span.column) for d in result.diagnostics]
     assert found == [("SCL920", 4, 8), ("SCL920", 6, 3)]  # once per name
     message = result.diagnostics[0].message
-    assert message.startswith("RUNTIME is a ")
+    assert message.startswith("GET_ERR_ID is a ")
     assert "does not simulate" in message

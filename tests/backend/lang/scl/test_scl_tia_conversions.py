@@ -43,15 +43,15 @@ def test_l_prefix_as_an_initial_value_and_out_of_range() -> None:
 _TEXTS = "s : STRING[40];\ni : INT;\nd : DINT;\nr : REAL;"
 
 
-def test_int_dint_real_to_string_right_justify_in_the_types_field() -> None:
+def test_int_dint_real_to_string_give_the_sign_and_digits() -> None:
     text = ob1(
-        "i := -42;\ns := INT_TO_STRING(i);\nM0.0 := s = '   -42';\n"
-        "s := INT_TO_STRING(IN := 7);\nM0.1 := s = '     7';\n"
-        "s := DINT_TO_STRING(L#123456);\nM0.2 := s = '     123456';\n"
+        "i := -42;\ns := INT_TO_STRING(i);\nM0.0 := s = '-42';\n"
+        "s := INT_TO_STRING(IN := 7);\nM0.1 := s = '+7';\n"
+        "s := DINT_TO_STRING(L#123456);\nM0.2 := s = '+123456';\n"
         "s := DINT_TO_STRING(L#-2147483648);\nM0.3 := s = '-2147483648';\n"
         "s := REAL_TO_STRING(-1.5);\nM0.4 := s = ' -1.500000E+00';\n"
         "s := REAL_TO_STRING(1234.5);\nM0.5 := s = ' +1.234500E+03';\n"
-        "s := CONCAT(IN1 := 'n=', IN2 := INT_TO_STRING(0));\nM0.6 := s = 'n=     0';",
+        "s := CONCAT(IN1 := 'n=', IN2 := INT_TO_STRING(0));\nM0.6 := s = 'n=+0';",
         _TEXTS,
     )
     for profile in ("S7-300", "S7-1500"):
@@ -82,12 +82,12 @@ def test_string_to_int_dint_real_read_blanks_and_a_sign() -> None:
 
 def test_s7_1500_types_to_string() -> None:
     text = ob1(
-        "s := UINT_TO_STRING(u);\nM0.0 := s = ' 65535';\n"
-        "s := USINT_TO_STRING(us);\nM0.1 := s = ' 200';\n"
+        "s := UINT_TO_STRING(u);\nM0.0 := s = '+65535';\n"
+        "s := USINT_TO_STRING(us);\nM0.1 := s = '+200';\n"
         "s := SINT_TO_STRING(ss);\nM0.2 := s = '-128';\n"
-        "s := UDINT_TO_STRING(ud);\nM0.3 := s = ' 4000000000';\n"
-        "s := LINT_TO_STRING(li);\nM0.4 := s = '          -9000000000';\n"
-        "s := ULINT_TO_STRING(ul);\nM0.5 := s = ' 18000000000000000000';",
+        "s := UDINT_TO_STRING(ud);\nM0.3 := s = '+4000000000';\n"
+        "s := LINT_TO_STRING(li);\nM0.4 := s = '-9000000000';\n"
+        "s := ULINT_TO_STRING(ul);\nM0.5 := s = '+18000000000000000000';",
         "s : STRING[40];\nu : UINT;\nus : USINT;\nss : SINT;\nud : UDINT;\nli : LINT;\nul : ULINT;",
     )
     text = text.replace(

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import re
 
-from stl_helpers import codes, real_value, run, value
+from cpu_run import read, real, run
+from stl_helpers import codes
 
 from nasaq.headless.addresses import parse_address
 from nasaq.ir import Direct
@@ -196,16 +197,16 @@ def test_a_classic_export_with_german_mnemonics_runs_its_multi_instances_and_db(
         "CYCL_EXC": "OB 1",  # STEP 7's symbol of OB 1
     }
     cpu = run(result, scans=2)
-    assert value(cpu, "MW 20") == 12  # "Recipes".First.Amount from BEGIN
-    assert value(cpu, "MW 22") == 4
-    assert value(cpu, "MB 24") == 7  # DBB 6 of "Recipes": Tab[1]
+    assert read(cpu, "MW 20") == 12  # "Recipes".First.Amount from BEGIN
+    assert read(cpu, "MW 22") == 4
+    assert read(cpu, "MB 24") == 7  # DBB 6 of "Recipes": Tab[1]
     start = parse_address("I 0.0")
     assert isinstance(start, Direct)
     cpu.set_input(start, 1)
     cpu.run(2)
-    assert value(cpu, "Q 4.0") == 1  # the first pump runs (E 0.0), the second does not
-    assert value(cpu, "Q 4.1") == 0
-    assert value(cpu, "MW 26") == 1  # one rising edge of Start counted in P1's instance data
+    assert read(cpu, "Q 4.0") == 1  # the first pump runs (E 0.0), the second does not
+    assert read(cpu, "Q 4.1") == 0
+    assert read(cpu, "MW 26") == 1  # one rising edge of Start counted in P1's instance data
 
 
 def test_a_symbol_table_gives_the_numbers_and_the_mnemonics_may_be_english() -> None:
@@ -253,8 +254,8 @@ END_ORGANIZATION_BLOCK
     result = compile_classic(table, SourceFile("Pump.awl", as_generated(text)))
     assert names(result) == {"Pump": "FB 7", "Line": "DB 30"}
     cpu = run(result)
-    assert value(cpu, "Q 4.2") == 1  # Start := TRUE from the instance DB's values
-    assert value(cpu, "MB 40") == 1
+    assert read(cpu, "Q 4.2") == 1  # Start := TRUE from the instance DB's values
+    assert read(cpu, "MB 40") == 1
 
 
 def test_a_udt_repeated_in_every_source_that_uses_it_is_one_udt() -> None:
@@ -358,12 +359,12 @@ END_FUNCTION
     result = compile_classic(SourceFile("scale.awl", text))
     assert names(result) == {"SCALE": "FC 1000", "UNSCALE": "FC 106"}
     cpu = run(result)
-    assert value(cpu, "MW 10") == 0
-    assert real_value(cpu, "MD 20") == 50.0  # half of 27648 is half of 0..100
-    assert value(cpu, "MW 12") == 8  # beyond 27648: HI_LIM and W#16#0008
-    assert real_value(cpu, "MD 24") == 100.0
-    assert value(cpu, "MW 14") == 0
-    assert value(cpu, "MW 16") == -13824  # a quarter of 0..100 on -27648..27648
+    assert read(cpu, "MW 10") == 0
+    assert real(cpu, "MD 20") == 50.0  # half of 27648 is half of 0..100
+    assert read(cpu, "MW 12") == 8  # beyond 27648: HI_LIM and W#16#0008
+    assert real(cpu, "MD 24") == 100.0
+    assert read(cpu, "MW 14") == 0
+    assert read(cpu, "MW 16") == -13824  # a quarter of 0..100 on -27648..27648
 
 
 def test_local_names_written_without_their_hash_sign() -> None:
@@ -396,4 +397,4 @@ a db41.dbx2.0;
 end_organization_block
 """
     cpu = run(compile_classic(SourceFile("lower.awl", text)))
-    assert value(cpu, "M 5.0") == 1
+    assert read(cpu, "M 5.0") == 1

@@ -223,7 +223,8 @@ def test_declared_variables_reach_an_any_parameter_with_their_type() -> None:
         Constant(ConstType.POINTER, 0x840000D0, 208, "P#DB100.DBX 26.0 BYTE 8"),  # STRUCTs: bytes
         Constant(ConstType.POINTER, 0x84000010, 16, "P#DB100.DBX 2.0 BYTE 4"),
         Direct(Area.M, Width.WORD, 2, 0),
-        Direct(Area.L, Width.WORD, 0, 0),  # a local: its address is known at run time only
+        # a temporary: the caller's local data (V, as the callee sees it), with its type
+        Constant(ConstType.POINTER, 0x87000000, 0, "P#V 0.0 INT 1"),
     ]
 
 

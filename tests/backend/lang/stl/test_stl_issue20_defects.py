@@ -4,6 +4,8 @@ multi-instance (cpu/COMPATIBILITY.md, "Defects (issue 20, the defects part)").""
 
 from __future__ import annotations
 
+from cpu_run import run
+
 from nasaq.cpu import Cpu
 from nasaq.diagnostics import Severity
 from nasaq.headless.addresses import parse_address
@@ -13,14 +15,7 @@ from nasaq.lang.stl.parse import MAX_SYNTAX_ERRORS
 
 
 def _run(text: str, scans: int = 1) -> Cpu:
-    result = compile_sources([SourceFile("prog.awl", text)])
-    errors = [f"{d.code} {d.span} {d.message}" for d in result.diagnostics if d.severity == "error"]
-    assert not errors, errors
-    cpu = Cpu(result.program, cycle_ms=10)
-    cpu.start()
-    cpu.run(scans)
-    assert cpu.mode == "RUN", cpu.stop_reason
-    return cpu
+    return run(compile_sources([SourceFile("prog.awl", text)]), scans)
 
 
 def _read(cpu: Cpu, text: str) -> int:

@@ -8,7 +8,8 @@ from __future__ import annotations
 
 import re
 
-from stl_helpers import codes, real_value, run, value
+from cpu_run import read, real, run
+from stl_helpers import codes
 
 from nasaq.ir import BlockKind
 from nasaq.lang.stl import CompileResult, SourceFile, compile_sources
@@ -228,10 +229,10 @@ def test_a_tia_export_compiles_with_its_blocks_numbered_as_tia_numbers_them() ->
 def test_a_tia_export_with_bom_and_crlf_runs_its_multi_instances_and_db() -> None:
     result = compile_sources([SourceFile("Plant.awl", as_exported(PLANT))])
     cpu = run(result, scans=3)
-    assert value(cpu, "MW 20") == 9  # "Settings".Table[2] from the DB's BEGIN section
-    assert real_value(cpu, "MD 30") == 7.0  # "Scale" of "Settings".Speed (7, not its default 5)
-    assert value(cpu, "MW 24") == 3  # the second multi-instance counted every scan
-    assert value(cpu, "Q 4.0") == 1  # the first valve opened (Go = TRUE, %I0.1 not closing)
+    assert read(cpu, "MW 20") == 9  # "Settings".Table[2] from the DB's BEGIN section
+    assert real(cpu, "MD 30") == 7.0  # "Scale" of "Settings".Speed (7, not its default 5)
+    assert read(cpu, "MW 24") == 3  # the second multi-instance counted every scan
+    assert read(cpu, "Q 4.0") == 1  # the first valve opened (Go = TRUE, %I0.1 not closing)
 
 
 def test_percent_addresses_are_the_addresses_without_percent() -> None:
@@ -306,7 +307,7 @@ def test_an_undefined_instance_db_of_a_call_is_created_as_step7_does() -> None:
     result = compile_tia(text)
     assert [d.code for d in result.diagnostics] == ["STL229"]  # a warning: DB 1 is created
     assert names(result)["Count_DB"] == "DB 1"
-    assert value(run(result, scans=4), "MW 4") == 4
+    assert read(run(result, scans=4), "MW 4") == 4
 
 
 def test_iec_timers_by_their_names_and_tia_data_type_choice() -> None:
@@ -344,8 +345,8 @@ END_ORGANIZATION_BLOCK
     modern = compile_tia(text, profile="S7-1500")
     assert {d.code for d in modern.diagnostics} == {"STL229"}  # Pulse_DB and Delays_DB created
     cpu = run(modern, scans=10, profile="S7-1500")
-    assert value(cpu, "Q 0.0") == 1
-    assert value(cpu, "Q 0.1") == 1
+    assert read(cpu, "Q 0.0") == 1
+    assert read(cpu, "Q 0.1") == 1
     classic = compile_tia(text)
     assert [code for code, _, _ in codes(classic) if code != "STL229"] == [
         "STL500",  # the optimized block
@@ -375,8 +376,8 @@ BEGIN
 END_ORGANIZATION_BLOCK
 """
     cpu = run(compile_tia(text))
-    assert value(cpu, "MW 40") == 250
-    assert value(cpu, "MD 42") == 100000
+    assert read(cpu, "MW 40") == 250
+    assert read(cpu, "MD 42") == 100000
     written = compile_tia(text.replace("T     %MW40;", "T     #Top;"))
     assert [code for code, _, _ in codes(written)] == ["STL204"]  # a constant is not written
     no_value = compile_tia(text.replace("Top : Int := 250;", "Top : Int;"))
@@ -409,8 +410,8 @@ BEGIN
 END_ORGANIZATION_BLOCK
 """
     cpu = run(compile_tia(text))
-    assert value(cpu, "M 1.0") == 1
-    assert value(cpu, "MW 2") == 7
+    assert read(cpu, "M 1.0") == 1
+    assert read(cpu, "MW 2") == 7
     parsed = parse_source("belt.awl", text)
     printed = format_source(parsed.source)
     assert '#"Start Button"' in printed
@@ -477,5 +478,5 @@ END_ORGANIZATION_BLOCK
     assert wait_db is not None
     assert wait_db.attributes["instance_of"] == "SFB 4"
     cpu = run(result, scans=6)
-    assert value(cpu, "MD 8") == 30  # the DB's actual value of PT, in ms
-    assert value(cpu, "M 7.0") == 1
+    assert read(cpu, "MD 8") == 30  # the DB's actual value of PT, in ms
+    assert read(cpu, "M 7.0") == 1

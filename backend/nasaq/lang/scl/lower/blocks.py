@@ -70,6 +70,7 @@ def lower_block(
             )
             for name, group in block.sections
         ]
+        start_info = _start_information(block, sections)
     except LoweringError as error:  # an initial value beyond the code generator
         where = f"{block.kind.value} {block.number}"
         return None, [problem("SCL301", block.file, error.loc, what=error.what, block=where)]
@@ -99,9 +100,33 @@ def lower_block(
             temps[-1].decls += hidden  # after the user's temporaries: their offsets stay
         else:
             sections.append(stl.VarSectionNode("VAR_TEMP", hidden, node.loc))
+    if start_info is not None:
+        sections.append(start_info)
     result.head += sections
     result.code = emitter.finish()
     return result, lowerer.diagnostics
+
+
+def _start_information(
+    block: SclBlock, sections: list[stl.VarSectionNode]
+) -> stl.VarSectionNode | None:
+    """An OB's VAR_INPUT (TIA's start information of an optimized OB, ``lang.ob_start_info``)
+    taken out of ``sections`` as temporaries after all others, behind 4 bytes the CPU writes
+    at the start of every OB (event class, priority, number): Nasaq has no hardware events, so
+    they start at 0/FALSE."""
+    if block.kind is not BlockKind.OB:
+        return None
+    inputs = [section for section in sections if section.kind == "VAR_INPUT"]
+    if not inputs:
+        return None
+    for section in inputs:
+        sections.remove(section)
+    where = block.node.loc
+    pad = ArrayType(((0, 3),), Elementary("BYTE"))
+    taken = {name.casefold() for name in block.variables}
+    name = next(f"_os{k}" for k in range(len(taken) + 1) if f"_os{k}" not in taken)
+    decls = [stl.VarDeclNode(name, _type_node(pad, where), None, {}, where)]
+    return stl.VarSectionNode("VAR_TEMP", decls + [d for s in inputs for d in s.decls], where)
 
 
 def _code(lowerer: Statements, block: SclBlock) -> None:

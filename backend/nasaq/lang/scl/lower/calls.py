@@ -18,11 +18,13 @@ from __future__ import annotations
 
 from nasaq.ir import BlockKind
 from nasaq.lang.scl import ast
+from nasaq.lang.scl.descriptor import is_descriptor
 from nasaq.lang.scl.lower.emitter import Temp
 from nasaq.lang.scl.lower.expressions import Expressions
 from nasaq.lang.scl.lower.literals import stl_constant
 from nasaq.lang.scl.lower.places import Access, LoweringError
 from nasaq.lang.scl.typecheck.iec_calls import instance_of, instruction, pairing
+from nasaq.lang.scl.typecheck.instructions import typed_form
 from nasaq.lang.scl.typecheck.rules.calls import STANDARD, called_by_name
 from nasaq.lang.scl.typecheck.types import BlockRef, DbRef, scalar
 from nasaq.lang.stl import ast as stl
@@ -90,6 +92,8 @@ class Calls(Expressions):
         if not isinstance(callee, ast.Name) or not called_by_name(self.ctx, callee.name):
             return None
         upper = callee.name.upper()
+        if upper not in STANDARD:  # SCALE_X_REAL: SCALE_X
+            upper = typed_form(upper)
         if upper in STANDARD and self.index.named(callee.name) is None:
             return upper
         return None
@@ -222,7 +226,7 @@ class Calls(Expressions):
                 eno = arg.value
                 continue
             if arg.name is None:
-                ins = [f for f in formals.values() if f[0] == "IN"]
+                ins = list({f[2]: f for f in formals.values() if f[0] == "IN"}.values())
                 if len(ins) != 1:
                     raise LoweringError(arg.loc, "a call without parameter names")
                 section, data_type, spelling = ins[0]
@@ -230,7 +234,11 @@ class Calls(Expressions):
                 section, data_type, spelling = formals[arg.name.casefold()]
             else:  # a block whose interface is not known here (an SFC): passed as written
                 section, data_type, spelling = ("OUT" if arg.output else "IN"), None, arg.name
-            if section == "OUT" or arg.output:
+            if data_type is not None and is_descriptor(data_type):  # VARIANT, ARRAY[*]
+                operand, temp = self.descriptor_actual(arg.value, data_type)
+                if temp is not None:
+                    used.append(temp)
+            elif section == "OUT" or arg.output:
                 operand, temp = self.output_actual(arg.value, data_type)
                 if temp is not None:
                     after.append((temp, arg.value))
@@ -297,7 +305,7 @@ class Calls(Expressions):
             if kind == "IDENT":  # TRUE/FALSE: STL reads them as names, as in `a := TRUE`
                 return stl.BareNode(text, None, em.loc), None
             return em.literal(kind, text), None
-        if self.passes_as_is(value, formal):
+        if self.passes_as_is(value, formal) or self.any_actual(value, formal):
             return self.operand(self.access(value), value.loc), None
         if formal is None or want is None or not isinstance(formal, Elementary | StringType):
             raise LoweringError(value.loc, "this actual parameter")
@@ -314,7 +322,7 @@ class Calls(Expressions):
     def output_actual(
         self, value: ast.Expr, formal: DataType | None
     ) -> tuple[stl.OperandNode, Temp | None]:
-        if self.passes_as_is(value, formal):
+        if self.passes_as_is(value, formal) or self.any_actual(value, formal):
             return self.operand(self.access(value), value.loc), None
         if formal is None or not isinstance(formal, Elementary):
             raise LoweringError(value.loc, "this output parameter")
@@ -347,6 +355,16 @@ class Calls(Expressions):
         except LoweringError:
             return False
         return self.plain(access)
+
+    def any_actual(self, value: ast.Expr, formal: DataType | None) -> bool:
+        """A variable of any type given to an ANY formal: passed as it is, the STL call makes
+        the ANY of it (type and count of its declaration), as STEP 7's SCL does."""
+        if formal != Elementary("ANY") or not self.is_variable(value) or id(value) in self.hoisted:
+            return False
+        try:
+            return self.plain(self.access(value))
+        except LoweringError:
+            return False
 
     def store_from(self, temp: Temp, place: ast.Expr) -> None:
         em = self.em
@@ -434,6 +452,13 @@ class Calls(Expressions):
         self.load_value(node, "WORD")
         self.em.op("T", self.em.ref(temp))
         return stl.IndirectNode(area, self.em.ref(temp), None, node.loc)
+
+    # ---- provided by the VARIANT part (``variant``) -------------------------------------------
+
+    def descriptor_actual(
+        self, value: ast.Expr, formal: DataType
+    ) -> tuple[stl.OperandNode, Temp | None]:  # pragma: no cover
+        raise NotImplementedError
 
     # ---- provided by the statements ---------------------------------------------------------
 

@@ -22,7 +22,7 @@ line (the S7-1200/1500 system manual, "Conversion operations" and "Move operatio
 
 from __future__ import annotations
 
-from nasaq.lang import dtl
+from nasaq.lang import dtl, tia_comm
 from nasaq.lang.iec_library import FUNCTIONS, LibraryFunction
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.lower.emitter import Temp
@@ -60,6 +60,7 @@ _LIBRARY = {
     ("T_DIFF", "DATE_AND_TIME"): "SB_DT_DT",
 }
 DAY_MS = "L#86400000"
+_CONCATS = ("CONCAT", "CONCAT_STRING", "CONCAT_WSTRING")
 # REAL to integer conversions whose ENO says whether the value fitted
 _ROUNDING = {
     "REAL_TO_INT": "INT",
@@ -168,8 +169,14 @@ class Instructions(Longs):
             self.block_move(node, name)
         elif name in instructions.CLOCKS:
             self.read_clock(node, name)
+        elif name in tia_comm.SYSTEM_FUNCTIONS:
+            self.system_function(node, name)
         elif name in instructions.TIME_FUNCTIONS:
             self.time_arithmetic(node, name)
+        elif name in instructions.DTL_CONVERSIONS:
+            self.dtl_conversion(node, name)
+        elif name == "RE_TRIGR":  # SFC 43: retrigger the cycle monitoring (nothing simulated)
+            self.em.call([stl.AddressNode("SFC 43", node.loc)], [])
         elif name == "TIME_TCK":  # SFC 64: RET_VAL := the system time
             ret = self.em.temp(Elementary("TIME"))
             sfc = stl.AddressNode("SFC 64", node.loc)
@@ -279,12 +286,7 @@ class Instructions(Longs):
             src = self.place_of(source)
         dst = self.place_of(target)
         step = _BITS[width]
-        switch = (
-            src is not None
-            and src.db is not None
-            and dst.db is not None
-            and not (isinstance(src.db, int) and src.db == dst.db)
-        )
+        switch = src is not None and self.two_dbs(src, dst)
         if src is not None:
             self.open_place(src)
         self.open_place(dst)
@@ -295,21 +297,14 @@ class Instructions(Longs):
         em.op("<=D")
         em.jump("JC", done)
         if src is not None:
-            self.reach(src, open_db=switch)
-            em.op("L", self.at(width, 0))
-            self.reach(dst, open_db=switch)
-            em.op("TAK")
+            self.copy_element(src, dst, width, 0, switch)
+            self.advance((src, dst), step)
         else:
             assert value is not None
             self.reach(dst, open_db=False)
             em.op("L", em.ref(value))
-        em.op("T", self.at(width, 0))
-        for place in (src, dst):
-            if place is not None:
-                em.op("L", em.ref(place.pointer))
-                em.load_text("TYPED", f"L#{step}")
-                em.op("+D")
-                em.op("T", em.ref(place.pointer))
+            em.op("T", self.at(width, 0))
+            self.advance((dst,), step)
         em.op("L", em.ref(n))
         em.load_text("TYPED", "L#1")
         em.op("-D")
@@ -377,6 +372,43 @@ class Instructions(Longs):
         if self.eno_status is not None:
             self.em.op("CLR")
             self.em.op("=", self.em.ref(self.eno_status))
+
+    # ---- RD_SINFO, AG_SEND, AG_RECV (``nasaq.lang.tia_comm``) --------------------------------
+    def system_function(self, node: ast.Call, name: str) -> None:
+        """``CALL SFC n`` with every parameter; RET_VAL (when there is one) into ACCU 1. A
+        start information (RD_SINFO) is passed as the variable the program gives."""
+        from nasaq.lang.system_types import parse
+
+        em = self.em
+        number, formals, result = tia_comm.function_parameters(name)
+        args: list[stl.CallArgNode] = []
+        used: list[Temp] = []
+        after: list[tuple[Temp, ast.Expr]] = []
+        for formal, section, text in formals:
+            value = self.parameter(node, name, formal)
+            if text in tia_comm.ANY_VARIABLE:
+                operand = self.operand(self.access(value), value.loc)
+            elif section == "OUT":
+                operand, temp = self.output_actual(value, parse(text))
+                if temp is not None:
+                    after.append((temp, value))
+            else:
+                operand, temp = self.input_actual(value, parse(text))
+                if temp is not None:
+                    used.append(temp)
+            args.append(em.arg(formal, operand))
+        ret = None if result is None else em.temp(parse(result))
+        if ret is not None:
+            args.append(em.arg("RET_VAL", em.ref(ret)))
+        em.call([stl.AddressNode(f"SFC {number}", node.loc)], args)
+        for temp in used:
+            em.release(temp)
+        for temp, place in after:
+            self.store_from(temp, place)
+            em.release(temp)
+        if ret is not None:
+            em.op("L", em.ref(ret))
+            em.release(ret)
 
     # ---- RD_SYS_T, RD_LOC_T, READ_CLK -------------------------------------------------------
 
@@ -551,6 +583,21 @@ class Instructions(Longs):
         for temp in (*stamps, ret):
             em.release(temp)
 
+    def dtl_conversion(self, node: ast.Call, name: str) -> None:
+        """DTL_TO_TOD, DTL_TO_DATE: the DTL as a DATE_AND_TIME, then the IEC library's DT_TOD
+        or DT_DATE (so a DATE of 1990-2089, *Nasaq*; the time of day of any year)."""
+        em = self.em
+        (value,) = self.arguments(node, "IN")
+        stamp = em.temp(DT)
+        self.dtl_to_dt(self.place_of(value), self.locate(Access("temp", temp=stamp), DT, node.loc))
+        ret = em.temp(Elementary(instructions.DTL_CONVERSIONS[name]))
+        args = [em.arg("IN", em.ref(stamp)), em.arg("RET_VAL", em.ref(ret))]
+        library = "DT_TOD" if name == "DTL_TO_TOD" else "DT_DATE"
+        em.call([stl.SymbolNode(library, False, [], node.loc)], args)
+        em.op("L", em.ref(ret))
+        em.release(stamp)
+        em.release(ret)
+
     def dtl_to_dt(self, source: Place, target: Place) -> None:
         """target (a DATE_AND_TIME) := source (a DTL): the fields in BCD, the year as two
         digits (1990-2089), the nanoseconds as milliseconds. Both places are used up."""
@@ -596,7 +643,7 @@ class Instructions(Longs):
         self.release_place(source)
         self.release_place(target)
 
-    # ---- CONCAT of more than two texts (TIA, S7-1200/1500) ----------------------------------
+    # ---- CONCAT of more than two texts (TIA, S7-1200/1500; of WSTRINGs CONCAT_WSTRING) ------
 
     def user_call(self, node: ast.Call, result: Temp | stl.OperandNode | None) -> None:
         texts = self.concat_inputs(node)
@@ -606,10 +653,13 @@ class Instructions(Longs):
         em = self.em
         if result is None:
             raise LoweringError(node.loc, "CONCAT as a statement")
+        name = self.library_function(node)
+        text = StringType(254, wide=name is not None and name.name == "CONCAT_WSTRING")
+        callee = "CONCAT_WSTRING" if text.wide else "CONCAT"
         done: Temp | None = None
         for position in range(1, len(texts)):
             last = position == len(texts) - 1
-            into = result if last else em.temp(StringType(254))
+            into = result if last else em.temp(text)
             first = em.ref(done) if done is not None else None
             used: list[Temp] = []
             args = []
@@ -617,13 +667,13 @@ class Instructions(Longs):
                 if formal == "IN1" and first is not None:
                     args.append(em.arg("IN1", first))
                     continue
-                operand, temp = self.input_actual(value, StringType(254))
+                operand, temp = self.input_actual(value, text)
                 args.append(em.arg(formal, operand))
                 if temp is not None:
                     used.append(temp)
             target = em.ref(into) if isinstance(into, Temp) else into
             args.append(em.arg("RET_VAL", target))
-            em.call([stl.SymbolNode("CONCAT", False, [], node.loc)], args)
+            em.call([stl.SymbolNode(callee, False, [], node.loc)], args)
             for temp in used:
                 em.release(temp)
             if done is not None:
@@ -633,7 +683,7 @@ class Instructions(Longs):
     def concat_inputs(self, node: ast.Call) -> list[ast.Expr] | None:
         """IN1 .. INn of a CONCAT with more than two inputs, in order; None for other calls."""
         callee = node.callee
-        if not isinstance(callee, ast.Name) or callee.name.upper() != "CONCAT":
+        if not isinstance(callee, ast.Name) or callee.name.upper() not in _CONCATS:
             return None
         if self.ctx.variable(callee.name) is not None or self.index.named(callee.name):
             return None

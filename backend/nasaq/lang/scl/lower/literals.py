@@ -142,7 +142,7 @@ def _parse(kind: str, text: str) -> Value | None:
         return Value("int", int(body.replace("_", "")))  # CHAR#49: the character of code 49
     if upper == "CHAR":
         return Value("chars", text=body)
-    if upper == "WSTRING":
+    if upper in ("STRING", "WSTRING"):  # TIA's STRING#'text', WSTRING#'text'
         return Value("chars", text=body)
     if upper == "WCHAR":  # its UTF-16 code unit
         units = unquote_chars(body).encode("utf-16-be", errors="surrogatepass")

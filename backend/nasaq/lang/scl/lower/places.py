@@ -22,6 +22,7 @@ from nasaq.ir import BlockKind
 from nasaq.lang.layout import Slot
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import SclBlock, SclIndex
+from nasaq.lang.scl.block_name import block_name
 from nasaq.lang.scl.lower.emitter import Emitter, Temp
 from nasaq.lang.scl.lower.literals import Value, evaluate
 from nasaq.lang.scl.typecheck.context import Context
@@ -183,6 +184,10 @@ class Base:
             if self.constant(node.right) is None:
                 return None
             return evaluate(node, self.index, self.block)  # constant folding, as S7-SCL does
+        if kind is ast.Call:
+            assert isinstance(node, ast.Call)
+            name = block_name(node, self.block.name, self.constant)
+            return None if name is None else evaluate(name, self.index, self.block)
         return None
 
     def report(self, code: str, loc: ast.Loc, **params: object) -> None:
@@ -220,7 +225,8 @@ class Base:
             raise LoweringError(node.loc, "this member access")
         if isinstance(node, ast.Index):
             base = self.access(node.base)
-            base.path.append(node.indices)
+            text = isinstance(self.type_of(node.base), StringType)
+            base.path.append(_CharIndex(node.indices) if text else node.indices)
             return base
         raise LoweringError(node.loc, "this expression as a variable")
 
@@ -339,6 +345,8 @@ class Base:
             if isinstance(part, str):
                 result.append(part)
                 continue
+            if type(part) is _CharIndex:
+                return None  # STL has no name for a character of a STRING: by its offset
             numbers: list[int] = []
             for item in part:
                 value = self.constant(item)
@@ -498,6 +506,11 @@ class Base:
                     raise LoweringError(loc, part)
                 members = current.members
                 continue
+            # TIA's s[i]: the characters after the header, addressed by offset (STL has no
+            # name for them), whatever the index
+            text = current is not None and isinstance(current.type, StringType)
+            if text and current is not None:
+                current = _characters(current)
             if current is None or not isinstance(current.type, ArrayType):
                 raise LoweringError(loc, "this index")
             array = current.type
@@ -505,7 +518,7 @@ class Base:
             variable: list[ast.Expr] = []
             # With a variable index, the term sums every index of the list (``m[i, 1]``): the
             # element is then taken at the low bounds, the constant ones included.
-            computed = any(self.constant(item) is None for item in part)
+            computed = text or any(self.constant(item) is None for item in part)
             for item, (low, _high) in zip(part, array.dims, strict=False):
                 value = self.constant(item)
                 known = value is not None and value.kind == "int" and not computed
@@ -516,7 +529,7 @@ class Base:
             element = self.index.layout.element(current, lows)
             if element is None:
                 raise LoweringError(loc, "an index outside the array")
-            if any(self.constant(item) is None for item in part):
+            if computed:
                 stride = self.index.layout.stride(array.element)
                 terms.append((variable, array, stride))
             current = element
@@ -598,3 +611,20 @@ def _dint(number: int) -> tuple[str, str]:
 
 
 __all__ = ["Access", "Base", "BlockRef", "LoweringError"]
+
+
+def _characters(text: Slot) -> Slot | None:
+    """A (W)STRING slot as the array of its characters ``[1..n]`` after the two length
+    fields; None for a STRING held by reference (its characters are elsewhere)."""
+    data_type = text.type
+    if not isinstance(data_type, StringType) or text.by_reference:
+        return None
+    char = Elementary("WCHAR" if data_type.wide else "CHAR")
+    header = 16 * data_type.char_bytes
+    chars = ArrayType(((1, max(1, data_type.length)),), char)
+    size = text.size_bits - header
+    return Slot(text.name, chars, text.offset_bits + header, size, section=text.section)
+
+
+class _CharIndex(list[ast.Expr]):
+    """The index of a character of a (W)STRING in an access path (``s[i]``, TIA)."""

@@ -16,12 +16,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from nasaq.ir import BlockKind
-from nasaq.lang.iec_library import FUNCTIONS, LibraryFunction, wide_variant
+from nasaq.lang.iec_library import FUNCTIONS, LibraryFunction
 from nasaq.lang.layout import Slot
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.lower.emitter import Temp
 from nasaq.lang.scl.lower.functions import Functions
 from nasaq.lang.scl.lower.places import Access, LoweringError, Selector
+from nasaq.lang.scl.typecheck import library
 from nasaq.lang.scl.typecheck.rules.calls import called_by_name
 from nasaq.lang.scl.typecheck.types import Type
 from nasaq.lang.stl import ast as stl
@@ -217,11 +218,11 @@ class References(Functions):
         callee = node.callee
         if not isinstance(callee, ast.Name) or not called_by_name(self.ctx, callee.name):
             return None
-        found = FUNCTIONS.get(callee.name.upper())
-        if found is None or self.index.named(callee.name) is not None:
+        upper = callee.name.upper()
+        if upper not in library.NAMES or self.index.named(callee.name) is not None:
             return None
-        wide = wide_variant(found.name, [self.type_of(arg.value) for arg in node.args])
-        return FUNCTIONS[wide]  # LEN of a WSTRING: LEN_WSTRING
+        values = [self.type_of(arg.value) for arg in node.args]
+        return FUNCTIONS[library.chosen(upper, node.args, values)]  # LEN_WSTRING, VAL_STRG_INT
 
     def standard_name(self, node: ast.Call) -> str | None:
         """Library FCs are called as FCs, not compiled in line."""
@@ -236,5 +237,9 @@ class References(Functions):
         if function is None:
             return super().target(node)
         formals = {name.casefold(): ("IN", kind, name) for name, kind in function.inputs}
+        for section, name, kind in function.others:
+            formals[name.casefold()] = (section, kind, name)
+        for alias, name in library.ALIASES.get(function.name, {}).items():  # LEN(IN := s)
+            formals[alias.casefold()] = formals[name.casefold()]
         callee = stl.SymbolNode(function.name, False, [], node.loc)
         return [callee], formals, function.result

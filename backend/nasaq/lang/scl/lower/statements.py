@@ -13,10 +13,12 @@ from copy import copy
 from nasaq.lang.layout import Slot
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.lower.literals import Value, stl_constant
-from nasaq.lang.scl.lower.long_functions import LongFunctions
 from nasaq.lang.scl.lower.longs import is_long
 from nasaq.lang.scl.lower.places import Access, LoweringError, Selector
 from nasaq.lang.scl.lower.slices import assign_slice
+from nasaq.lang.scl.lower.tia_timing import TiaTiming
+from nasaq.lang.scl.lower.variant import Variants
+from nasaq.lang.scl.lower.wide_control import WIDE_COUNTERS, WIDE_SELECTORS, WideControl
 from nasaq.lang.scl.typecheck.types import scalar
 from nasaq.lang.types import (
     ArrayType,
@@ -33,7 +35,7 @@ _ZERO = Value("int", 0)
 _ONE = Value("int", 1)
 
 
-class Statements(LongFunctions):
+class Statements(WideControl, Variants, TiaTiming):
     def statements(self, body: list[ast.Stmt]) -> None:
         for stmt in body:
             self.statement(stmt)
@@ -209,6 +211,9 @@ class Statements(LongFunctions):
     def do_case(self, stmt: ast.Case) -> None:
         em = self.em
         kind = scalar(self.type_of(stmt.selector)) or "INT"
+        if kind in WIDE_SELECTORS:
+            self.wide_case(stmt, kind)
+            return
         unsigned = kind == "UDINT"  # compared with the top bits flipped (labels too)
         kind = "DINT" if kind in ("DINT", "DWORD", "SINT", "USINT", "UINT", "UDINT") else "INT"
         suffix = "I" if kind == "INT" else "D"
@@ -277,6 +282,9 @@ class Statements(LongFunctions):
     def do_for(self, stmt: ast.For) -> None:
         em = self.em
         kind = self.loop_kind(self.scalar_of(stmt.variable))
+        if kind in WIDE_COUNTERS:
+            self.wide_for(stmt, kind)
+            return
         suffix = "I" if kind == "INT" else "D"
         counter = stmt.variable
         top, step_label, leave = em.new_label(), em.new_label(), em.new_label()

@@ -166,6 +166,10 @@ class Strings(References):
     def call_result(self, node: ast.Call) -> Temp:
         """A STRING function value in a STRING[254] temporary."""
         found = self.type_of(node)
+        if isinstance(found, StringType) and self.constant(node) is not None:  # GetBlockName
+            kept = self.em.temp(StringType(254, found.wide))
+            self.store_text(node, Access("temp", temp=kept), kept.type, node.loc)
+            return kept
         if isinstance(found, StringType) and self.standard_name(node) is None:
             temp = self.em.temp(StringType(254, found.wide))
             self.user_call(node, temp)
@@ -261,24 +265,14 @@ class Strings(References):
         self.reach(target)
         em.op("L", em.ref(count))
         em.op("T", self.at(unit, width))
-        # two different DBs are opened in turn; otherwise the one DB stays open
-        both = source.db is not None and target.db is not None
-        switch = both and not (isinstance(source.db, int) and source.db == target.db)
+        switch = self.two_dbs(source, target)
         em.place(top)
         em.op("L", em.ref(count))
         em.load_text("NUMBER", "0")
         em.op("<=I")
         em.jump("JC", done)
-        self.reach(source, open_db=switch)
-        em.op("L", self.at(unit, 2 * width))
-        self.reach(target, open_db=switch)
-        em.op("TAK")
-        em.op("T", self.at(unit, 2 * width))
-        for place in (source, target):
-            em.op("L", em.ref(place.pointer))
-            em.load_text("TYPED", f"L#{8 * width}")
-            em.op("+D")
-            em.op("T", em.ref(place.pointer))
+        self.copy_element(source, target, unit, 2 * width, switch)
+        self.advance((source, target), 8 * width)
         em.op("L", em.ref(count))
         em.load_text("NUMBER", "1")
         em.op("-I")
@@ -286,6 +280,34 @@ class Strings(References):
         em.jump("JU", top)
         em.place(done)
         em.release(count)
+
+    @staticmethod
+    def two_dbs(source: Place, target: Place) -> bool:
+        """Whether a copy between the places opens two different DBs in turn (otherwise the one
+        DB stays open)."""
+        both = source.db is not None and target.db is not None
+        return both and not (isinstance(source.db, int) and source.db == target.db)
+
+    def copy_element(
+        self, source: Place, target: Place, unit: str, byte: int, switch: bool
+    ) -> None:
+        """The ``unit`` (B, W, D) at ``byte`` of ``target`` := the one of ``source``, the step of
+        a copy loop (``switch``: the places are in two DBs, see ``two_dbs``)."""
+        em = self.em
+        self.reach(source, open_db=switch)
+        em.op("L", self.at(unit, byte))
+        self.reach(target, open_db=switch)
+        em.op("TAK")
+        em.op("T", self.at(unit, byte))
+
+    def advance(self, places: tuple[Place, ...], bits: int) -> None:
+        """The pointers of ``places`` on by ``bits`` (to the next element of a copy loop)."""
+        em = self.em
+        for place in places:
+            em.op("L", em.ref(place.pointer))
+            em.load_text("TYPED", f"L#{bits}")
+            em.op("+D")
+            em.op("T", em.ref(place.pointer))
 
     def copy_dt(self, source: Place, target: Place) -> None:  # pragma: no cover - ``dates``
         raise NotImplementedError

@@ -24,9 +24,12 @@ from nasaq.lang.scl.bind import SclBlock, SclIndex
 from nasaq.lang.scl.typecheck.context import Context
 from nasaq.lang.scl.typecheck.instances import note_implicit_instances
 from nasaq.lang.scl.typecheck.rules import BLOCKS, EXPRESSIONS, STATEMENTS, StatementRule
+from nasaq.lang.scl.typecheck.types import assignable
 from nasaq.lang.scl.typecheck.walk import Outline, bodies, expressions, outline
+from nasaq.lang.types import ArrayType, BlockType, Elementary, StringType, StructType
 
 CODE_BLOCKS = (BlockKind.OB, BlockKind.FB, BlockKind.FC)
+DATA_TYPES = (Elementary, StringType, ArrayType, StructType, BlockType)
 
 
 def check_block(index: SclIndex, block: SclBlock) -> list[Diagnostic]:
@@ -92,7 +95,15 @@ def _multiple_assignment(ctx: Context, stmt: ast.Assign) -> None:
         what = f"{stmt.op}=" if stmt.op else "a multiple assignment"
         ctx.report("SCL500", stmt.loc, what=what, profile=profile)
     plain = [ast.Assign(stmt.target, stmt.value, loc=stmt.loc)] if stmt.op else stmt.steps()
+    originals = [step.value for step in plain]
     _statements(ctx, list[ast.Stmt](plain))
+    stmt.value = plain[0].value  # the value as stored (TIA's implicit conversion, S7-1500)
+    for step, original in zip(plain[1:], originals[1:], strict=True):
+        goal = ctx.type_of(step.target)
+        if step.value is not original and isinstance(goal, DATA_TYPES):
+            verdict = assignable(ctx.type_of(original), goal)  # no conversion between targets
+            if verdict.code is not None:
+                ctx.report(verdict.code, original.loc, **verdict.params)
 
 
 __all__ = ["check_block", "check_index", "checked_block"]

@@ -17,7 +17,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nasaq.ir import BlockKind
-from nasaq.lang.iec_library import wide_variant
+from nasaq.lang import text_instructions
 from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.typecheck import iec_calls, instructions, library
@@ -48,22 +48,47 @@ def resolve(ctx: Context, node: ast.Call) -> Signature | None:
             return _with_instance(ctx, base, callee)
     if isinstance(callee, ast.Name) and called_by_name(ctx, callee.name):
         upper = callee.name.upper()
+        if upper not in STANDARD:  # SCALE_X_REAL: SCALE_X
+            upper = instructions.typed_form(upper)
         if unsimulated_conversion(upper) and ctx.index.named(callee.name) is None:
             return None  # SCL800 (``rules.calls``)
+        classic = not is_s7_1500(ctx.index.profile)
+        if classic and upper in text_instructions.S7_1500_ONLY and not ctx.index.named(callee.name):
+            return None  # SCL500 (``rules.calls``): its parameters mean nothing there
         if upper in STANDARD and ctx.index.named(callee.name) is None:
             values = [ctx.type_of(arg.value) for arg in node.args]
-            wide = wide_variant(upper, values)  # LEN of a WSTRING: LEN_WSTRING
-            if upper == "CONCAT" and is_s7_1500(ctx.index.profile) and wide == upper:
+            wide = library.chosen(upper, node.args, values)  # LEN of a WSTRING: LEN_WSTRING
+            if wide == "CONCAT" and is_s7_1500(ctx.index.profile):  # (or CONCAT_STRING)
                 return instructions.concat_many()  # TIA: IN1 .. INn
-            if wide != upper and len(node.args) > 2 and upper == "CONCAT":
-                return None  # SCL800 (``rules.calls``)
+            if wide == "CONCAT_WSTRING" and len(node.args) > 2:  # (WSTRING: S7-1500 only)
+                return instructions.concat_many(wide=True)
             found = S5_FUNCTIONS.get(upper) or library.signature(wide)
             return found or instructions.signature(upper)
     if not isinstance(callee, ast.Local) and ctx.variable(_text(callee)) is None:
         named = block_id(ctx.index, ctx.block, callee)
         if named is not None and named[0] is not BlockKind.DB:
             return _block(ctx, named, callee)
-    return _value(ctx, ctx.type_of(callee), callee)
+    value = ctx.type_of(callee)
+    if isinstance(callee, ast.Symbol) and not _callable(value):
+        # "Name"(...) calls a global block: a local of that name (a STRING holding the
+        # block's result, as TIA projects often name it) is not the callee.
+        _undeclared_block(ctx, callee)
+        return None
+    return _value(ctx, value, callee)
+
+
+def _callable(value: Type) -> bool:
+    kinds = ("FB", "SFB")
+    return (
+        is_silent(value)
+        or isinstance(value, DbRef | BlockRef)
+        or (isinstance(value, BlockType) and value.kind in kinds)
+    )
+
+
+def _undeclared_block(ctx: Context, callee: ast.Symbol) -> None:
+    """A quoted callee no source, symbol or system block declares: SCL201 names it."""
+    ctx.report("SCL201", callee.loc, name=f'"{callee.name}"', block=ctx.block.label)
 
 
 def _text(node: ast.Expr) -> str:

@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from nasaq.lang import tia_iec
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import IEC_INSTANCES, SclIndex
 from nasaq.lang.scl.typecheck.signatures import IEC_NAMES, Signature, of_instance
@@ -56,6 +57,9 @@ def instance_of(index: SclIndex, value: Type) -> BlockType | None:
 def pairing(instance: BlockType, run: int) -> IecCall | None:
     """How instruction ``run`` runs on ``instance``; None when it cannot."""
     have = instance.number
+    typed = tia_iec.paired(have, run)  # CTU_DINT, IEC_DCOUNTER, IEC_LTIMER ... (S7-1500)
+    if typed is not None:
+        return IecCall(instance, typed[1], typed[2])
     if have == run or (have in TIMERS and run in TIMERS):
         return IecCall(instance, run, {})
     if have == CTUD and run in COUNTER_OUTPUTS:
@@ -81,7 +85,8 @@ def resolve(ctx: Context, callee: ast.Member, run: int) -> Signature | None:
         made_of = IEC_NAMES.get(instance.number, f"SFB {instance.number}")
         ctx.report("SCL703", callee.loc, db=ctx.text(callee.base), name=name, instance=made_of)
         return None
-    return of_instance(ctx.index, BlockType("SFB", run))
+    typed = tia_iec.paired(instance.number, run)  # its own types: CTU_DINT's PV is a DINT
+    return of_instance(ctx.index, BlockType("SFB", run if typed is None else typed[0]))
 
 
 __all__ = ["IecCall", "instance_of", "instruction", "pairing", "resolve"]

@@ -22,6 +22,7 @@ unknown parameter names (``SCL223``), a parameter twice (``SCL228``), wrong inpu
 - ``T_ADD``/``T_SUB`` ``(IN1 := point or duration, IN2 := duration)``: IN1's type (TIME,
   TIME_OF_DAY, DATE_AND_TIME, DTL); ``T_DIFF (IN1, IN2)`` of one type: a TIME;
   ``T_COMBINE (IN1 := DATE, IN2 := TIME_OF_DAY)``: a DATE_AND_TIME.
+- ``DTL_TO_TOD``/``DTL_TO_DATE`` ``(IN := a DTL)``: its TIME_OF_DAY, its DATE.
 """
 
 from __future__ import annotations
@@ -29,6 +30,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from functools import cache
 
+from nasaq.lang import tia_comm, tia_timing
 from nasaq.lang.dtl import DTL
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.typecheck.signatures import BOOL, Param, Signature
@@ -87,8 +89,31 @@ SELECTIONS = frozenset(["MAX", "MIN", "LIMIT", "SEL", "MUX", "SCALE_X", "NORM_X"
 BLOCK_MOVES = frozenset(["MOVE_BLK", "UMOVE_BLK", "FILL_BLK"])
 CLOCKS = {"RD_SYS_T": "OUT", "RD_LOC_T": "OUT", "READ_CLK": "CDT"}  # their output's name
 TIME_FUNCTIONS = frozenset(["T_ADD", "T_SUB", "T_DIFF", "T_COMBINE"])
+# TIA's conversions of a DTL (S7-1200/1500): its time of day, its date
+DTL_CONVERSIONS = {"DTL_TO_TOD": "TIME_OF_DAY", "DTL_TO_DATE": "DATE"}
 NAMES = SELECTIONS | BLOCK_MOVES | CLOCKS.keys() | TIME_FUNCTIONS | {"TIME_TCK"}
+NAMES |= DTL_CONVERSIONS.keys()
+# RE_TRIGR (SFC 43, retrigger the cycle monitoring): no parameters, nothing to simulate
+NAMES |= {"RE_TRIGR"}
+# TIA's typed forms of the overloaded instructions (``SCALE_X_REAL``, ``NORM_X_REAL``, ``MIN_INT``):
+# the suffix names the data type TIA's box was given; Nasaq runs the untyped instruction, whose
+# type comes from its values (``typed_form``)
+TYPED_BASES = frozenset(["SCALE_X", "NORM_X", "MIN", "MAX", "LIMIT", "SEL", "MUX"])
+_SUFFIXES = frozenset(
+    ["SINT", "USINT", "INT", "UINT", "DINT", "UDINT", "LINT", "ULINT", "REAL", "LREAL"]
+) | frozenset(["BYTE", "WORD", "DWORD", "LWORD", "TIME", "LTIME", "CHAR", "DATE", "TOD"])
+
+
+def typed_form(name: str) -> str:
+    """The instruction a typed form names (``SCALE_X_REAL``: ``SCALE_X``), else ``name``."""
+    base, _, suffix = name.upper().rpartition("_")
+    return base if base in TYPED_BASES and suffix in _SUFFIXES else name
+
+
+NAMES |= tia_timing.NAMES
+NAMES |= tia_comm.SYSTEM_FUNCTIONS.keys() | {tia_comm.GET_BLOCK_NAME}
 TIME, TOD, DATE, DT = _E("TIME"), _E("TIME_OF_DAY"), _E("DATE"), _E("DATE_AND_TIME")
+LTIME = _E("LTIME")
 # the inputs that take part in the common type of a selection (the others are K, G, VALUE ...)
 VALUES = {
     "MAX": None,
@@ -143,9 +168,9 @@ def signature(name: str) -> Signature | None:
         value = (REAL,) if name == "SCALE_X" else NUMBERS
         params = [Param("MIN", "IN", NUMBERS, True), Param("VALUE", "IN", value, True)]
         return _signature(name, [*params, Param("MAX", "IN", NUMBERS, True)])
-    if name in ("T_ADD", "T_SUB"):
-        first = Param("IN1", "IN", (TIME, TOD, DT, DTL), True)
-        return _signature(name, [first, Param("IN2", "IN", (TIME,), True)])
+    if name in ("T_ADD", "T_SUB"):  # an LTIME +/- an LTIME or a TIME (``ltime_operands``)
+        first = Param("IN1", "IN", (TIME, TOD, DT, DTL, LTIME), True)
+        return _signature(name, [first, Param("IN2", "IN", (TIME, LTIME), True)])
     if name == "T_DIFF":
         return _signature(
             name, [Param(n, "IN", (TOD, DATE, DT, TIME, DTL), True) for n in ("IN1", "IN2")]
@@ -155,6 +180,17 @@ def signature(name: str) -> Signature | None:
         return _signature(name, params, DT)
     if name == "TIME_TCK":
         return _signature(name, [], _E("TIME"))
+    if name in DTL_CONVERSIONS:
+        return _signature(name, [Param("IN", "IN", (DTL,), True)], _E(DTL_CONVERSIONS[name]))
+    if name in tia_timing.PARAMETERS:  # RUNTIME, RESET_TIMER, PRESET_TIMER
+        formals, returns = tia_timing.PARAMETERS[name]
+        return _signature(name, [Param(n, s, types, True) for n, s, types in formals], returns)
+    if name in tia_comm.SYSTEM_FUNCTIONS:  # RD_SINFO, AG_SEND, AG_RECV (``nasaq.lang.tia_comm``)
+        return _system_function(name)
+    if name == tia_comm.GET_BLOCK_NAME:  # the calling block's name (``tia_comm``)
+        sizes = tuple(_E(kind) for kind in ("UINT", "USINT", "UDINT", "INT", "DINT", "SINT"))
+        label = tia_comm.SPELLING[name]
+        return _signature(label, [Param("SIZE", "IN", sizes, True)], tia_comm.BLOCK_NAME_TYPE)
     if name in CLOCKS:
         return _signature(name, [Param(CLOCKS[name], "OUT", (_E("ANY"),), True)], INT)
     if name in BLOCK_MOVES:
@@ -165,6 +201,19 @@ def signature(name: str) -> Signature | None:
         ]
         return _signature(name, moves)
     return None
+
+
+def _system_function(name: str) -> Signature:
+    """A system function's parameters; a structured one takes any variable (the start
+    information of RD_SINFO: the program declares its own STRUCT of that layout)."""
+    from nasaq.lang.system_types import parse
+
+    _number, formals, result = tia_comm.function_parameters(name)
+    params = [
+        Param(formal, section, (_E("ANY") if text in tia_comm.ANY_VARIABLE else parse(text),), True)
+        for formal, section, text in formals
+    ]
+    return _signature(name, params, None if result is None else parse(result))
 
 
 def arguments(node: ast.Call, name: str) -> list[ast.Arg]:
@@ -253,6 +302,29 @@ def block_move(
     return None
 
 
+def ltime_operands(
+    name: str, node: ast.Call, type_of: Callable[[ast.Expr], Type]
+) -> tuple[ast.Expr, Verdict] | None:
+    """T_ADD/T_SUB take an LTIME duration (IN2) only for an LTIME (IN1), as TIA Portal's
+    S7-1200/1500 variants do: a TIME, TIME_OF_DAY, DATE_AND_TIME or DTL takes a TIME."""
+    if name not in ("T_ADD", "T_SUB"):
+        return None
+    values = {
+        (arg.name or ("IN1", "IN2")[position]).upper(): arg.value
+        for position, arg in enumerate(node.args[:2])
+    } | {(arg.name or "").upper(): arg.value for arg in node.args if arg.name}
+    first, second = values.get("IN1"), values.get("IN2")
+    if first is None or second is None:
+        return None
+    have, duration = type_of(first), type_of(second)
+    if is_silent(have) or is_silent(duration) or scalar(duration) != "LTIME":
+        return None
+    if scalar(have) == "LTIME":
+        return None
+    verdict = {"actual": "LTIME", "expected": "TIME", "function": "LTIME_TO_TIME"}
+    return second, Verdict("SCL213", verdict)
+
+
 def clock_output(name: str, node: ast.Call, type_of: Callable[[ast.Expr], Type]) -> Verdict | None:
     """The output of a clock read must be a DATE_AND_TIME or a DTL."""
     for arg in node.args:
@@ -279,8 +351,11 @@ def time_result(name: str, node: ast.Call, type_of: Callable[[ast.Expr], Type]) 
 
 
 @cache
-def concat_many() -> Signature:
-    """TIA's CONCAT on the S7-1200/1500 profile: IN1 .. IN32 (at least two), a STRING; on
-    S7-300/400 CONCAT is the library's FC 2 with IN1 and IN2 only."""
-    text = StringType(254)
-    return _signature("CONCAT", _numbered("IN", 1, 2, (text,)), text)
+@cache
+def concat_many(wide: bool = False) -> Signature:
+    """TIA's CONCAT on the S7-1200/1500 profile: IN1 .. IN32 (at least two), a STRING (or,
+    ``wide``, a WSTRING: CONCAT of a WSTRING, ``CONCAT_WSTRING``); on S7-300/400 CONCAT is the
+    library's FC 2 with IN1 and IN2 only."""
+    text = StringType(254, wide=wide)
+    name = "CONCAT_WSTRING" if wide else "CONCAT"
+    return _signature(name, _numbered("IN", 1, 2, (text,)), text)

@@ -18,8 +18,9 @@ from functools import cache
 
 from nasaq.ir import BlockKind
 from nasaq.lang.scl.bind import IEC_INSTANCES, SclBlock, SclIndex
-from nasaq.lang.system_blocks import SFB_INTERFACES
-from nasaq.lang.types import BlockType, DataType, Elementary, elementary, is_reference
+from nasaq.lang.system_blocks import SFB_INTERFACES, SFB_NAMES
+from nasaq.lang.system_types import parse as parse_type
+from nasaq.lang.types import BlockType, DataType, Elementary, is_reference
 
 PARAMETER_SECTIONS = ("IN", "OUT", "IN_OUT")
 BOOL = Elementary("BOOL")
@@ -49,8 +50,13 @@ class Signature:
     result: DataType | None = None
 
     def inputs(self) -> list[Param]:
-        """The input parameters, without EN."""
-        return [p for p in self.params.values() if p.section == "IN" and p.name != "EN"]
+        """The input parameters, without EN (and without another name of one: TIA's
+        ``LEN(IN := s)`` for FC 21's S, ``nasaq.lang.scl.typecheck.library.ALIASES``)."""
+        return [
+            p
+            for key, p in self.params.items()
+            if p.section == "IN" and p.name != "EN" and key == p.name.casefold()
+        ]
 
 
 def _signature(
@@ -88,11 +94,11 @@ def _system(number: int) -> Signature | None:
     if interface is None:
         return None
     params = [
-        Param(name, section, (found,))
+        Param(name, section, (parse_type(type_name),))
         for section, name, type_name in interface
-        if section in PARAMETER_SECTIONS and (found := elementary(type_name)) is not None
+        if section in PARAMETER_SECTIONS
     ]
-    return _signature(IEC_NAMES.get(number, f"SFB {number}"), "SFB", params)
+    return _signature(IEC_NAMES.get(number, SFB_NAMES.get(number, f"SFB {number}")), "SFB", params)
 
 
 def _s5(name: str, number: str, area: str, inputs: list[str], outputs: list[str]) -> Signature:

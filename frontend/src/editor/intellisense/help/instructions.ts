@@ -207,6 +207,30 @@ const SCL_EXPLICIT: Record<string, SclFunctionHelp> = {
   S_CU: { family: 'sclCounter', params: { kind: 'upCounter' }, inputs: ['C_NO', 'CU', 'S', 'PV', 'R', 'Q', 'CV'], result: 'WORD' },
   S_CD: { family: 'sclCounter', params: { kind: 'downCounter' }, inputs: ['C_NO', 'CD', 'S', 'PV', 'R', 'Q', 'CV'], result: 'WORD' },
   S_CUD: { family: 'sclCounter', params: { kind: 'upDownCounter' }, inputs: ['C_NO', 'CU', 'CD', 'S', 'PV', 'R', 'Q', 'CV'], result: 'WORD' },
+  // TIA Portal, S7-1200/1500: VARIANT and ARRAY[*] parameters
+  LOWER_BOUND: { family: 'lowerBound', inputs: ['ARR', 'DIM'], result: 'DINT' },
+  UPPER_BOUND: { family: 'upperBound', inputs: ['ARR', 'DIM'], result: 'DINT' },
+  COUNTOFELEMENTS: { family: 'countOfElements', inputs: [], result: 'UDINT' },
+  IS_ARRAY: { family: 'isArray', inputs: [], result: 'BOOL' },
+  TYPEOF: { family: 'typeOf', inputs: [], result: 'VARIANT type' },
+  TYPEOFELEMENTS: { family: 'typeOfElements', inputs: [], result: 'VARIANT type' },
+  SERIALIZE: { family: 'serialize', inputs: ['SRC_VARIABLE', 'DEST_ARRAY', 'POS'], result: 'INT' },
+  DESERIALIZE: { family: 'deserialize', inputs: ['SRC_ARRAY', 'DEST_VARIABLE', 'POS'], result: 'INT' },
+  VARIANTGET: { family: 'variantGet', inputs: ['SRC', 'DST'], result: 'VOID' },
+  VARIANTPUT: { family: 'variantPut', inputs: ['SRC', 'DST'], result: 'VOID' },
+  MOVE_BLK_VARIANT: { family: 'moveBlkVariant', inputs: ['SRC', 'COUNT', 'SRC_INDEX', 'DEST_INDEX', 'DEST'], result: 'INT' },
+  // TIA Portal, S7-1200/1500: DB_ANY and direct memory access
+  DB_ANY_TO_UINT: { family: 'dbAnyToUint', inputs: ['IN'], result: 'UINT' },
+  UINT_TO_DB_ANY: { family: 'uintToDbAny', inputs: ['IN'], result: 'DB_ANY' },
+  PEEK: { family: 'peek', params: { width: '=BYTE' }, inputs: ['AREA', 'DBNUMBER', 'BYTEOFFSET'], result: 'BYTE' },
+  PEEK_WORD: { family: 'peek', params: { width: '=WORD' }, inputs: ['AREA', 'DBNUMBER', 'BYTEOFFSET'], result: 'WORD' },
+  PEEK_DWORD: { family: 'peek', params: { width: '=DWORD' }, inputs: ['AREA', 'DBNUMBER', 'BYTEOFFSET'], result: 'DWORD' },
+  PEEK_BOOL: { family: 'peekBool', inputs: ['AREA', 'DBNUMBER', 'BYTEOFFSET', 'BITOFFSET'], result: 'BOOL' },
+  POKE: { family: 'poke', inputs: ['AREA', 'DBNUMBER', 'BYTEOFFSET', 'VALUE'], result: 'VOID' },
+  POKE_BOOL: { family: 'pokeBool', inputs: ['AREA', 'DBNUMBER', 'BYTEOFFSET', 'BITOFFSET', 'VALUE'], result: 'VOID' },
+  // TIA Portal, S7-1200/1500: numbers into text and back
+  VAL_STRG: { family: 'valStrg', inputs: ['IN', 'SIZE', 'PREC', 'FORMAT', 'P', 'OUT'], result: 'VOID' },
+  STRG_VAL: { family: 'strgVal', inputs: ['IN', 'FORMAT', 'P', 'OUT'], result: 'VOID' },
 };
 const S5_TIMERS = { S_PULSE: 'pulse', S_PEXT: 'extendedPulse', S_ODT: 'onDelay', S_ODTS: 'retentiveOnDelay', S_OFFDT: 'offDelay' };
 const SCL_MATH = { SQR: 'square', SQRT: 'squareRoot', EXP: 'exponential', LN: 'logarithm', SIN: 'sine', COS: 'cosine', TAN: 'tangent', ASIN: 'arcSine', ACOS: 'arcCosine', ATAN: 'arcTangent' };

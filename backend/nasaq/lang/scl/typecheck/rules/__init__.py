@@ -14,11 +14,11 @@ code at once). ``EXPRESSIONS``, ``STATEMENTS`` and ``BLOCKS`` are what the check
 | ``operators`` | SCL211, SCL212 | operand types, implicit conversions |
 | ``calls`` | — | result types of standard functions and FCs |
 | ``call_parameters`` | SCL223–SCL234, SCL247, SCL251 | callee, actual parameters, FB calls |
-| ``assignment`` | SCL213, SCL214, SCL218 | assignment compatibility |
+| ``assignment`` | SCL213, SCL214, SCL218, SCL705, SCL706 | assignment (S7-1500: ``implicit``) |
 | ``assign_input`` | SCL215 (warning) | an assignment to an input parameter |
 | ``conditions`` | SCL220 | IF/ELSIF/WHILE/REPEAT conditions are BOOL |
 | ``for_variable`` | SCL221 | FOR variable INT/DINT, bounds assignable to it |
-| ``case_labels`` | SCL235, SCL236, SCL248 | CASE selector INT, labels once, ranges upwards |
+| ``case_labels`` | SCL235, SCL236, SCL248 | CASE selector INT (S7-1500 more), labels, ranges |
 | ``counter_writes`` | SCL250 (warning) | no write to the FOR variable inside its loop |
 | ``sign_after_operator`` | SCL246 (warning) | ``A * -B`` |
 | ``loop_jumps`` | SCL237 | EXIT/CONTINUE inside a loop |

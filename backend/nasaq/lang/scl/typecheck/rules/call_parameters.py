@@ -28,7 +28,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nasaq.lang.scl import ast
-from nasaq.lang.scl.typecheck import callee, time_dint
+from nasaq.lang.scl.descriptor import DbAnyType, is_descriptor
+from nasaq.lang.scl.typecheck import callee, implicit, time_dint, variant
 from nasaq.lang.scl.typecheck.rules import calls
 from nasaq.lang.scl.typecheck.signatures import S5_FUNCTIONS, Param, Signature
 from nasaq.lang.scl.typecheck.types import (
@@ -133,6 +134,13 @@ def _argument(ctx: Context, signature: Signature, param: Param, arg: ast.Arg) ->
     if arg.output and param.section != "OUT":
         ctx.report("SCL224", arg.loc, name=param.name, block=signature.label, section=param.section)
         return
+    if is_descriptor(param.types[0]):  # VARIANT, ARRAY[*] (S7-1200/1500)
+        ctx.written_actuals.add(id(arg.value))
+        variant.check_actual(ctx, param.types[0], arg.value, value)
+        return
+    if isinstance(param.types[0], DbAnyType):  # a DB or a DB_ANY (S7-1200/1500)
+        variant.check_db_any(ctx, param.name, arg.value, value)
+        return
     if param.section == "IN":
         if param.bcd and isinstance(value, IntConst) and 0 <= value.value <= BCD_LIMIT:
             word = f"W#16#{value.value:04X}"
@@ -142,10 +150,17 @@ def _argument(ctx: Context, signature: Signature, param: Param, arg: ast.Arg) ->
             value = _S5_NUMBER  # TV/PV are BCD words: a decimal number is no bit pattern there
         verdict = _passes(value, param.types)
         if verdict.code is not None and not time_dint.implicit(ctx, value, param.types[0]):
-            ctx.report(verdict.code, arg.value.loc, **verdict.params)
+            single = len(param.types) == 1
+            converted = implicit.accepts(ctx, value, param.types[0], arg.value) if single else None
+            if converted is None:
+                ctx.report(verdict.code, arg.value.loc, **verdict.params)
+            else:
+                arg.value = converted  # TIA's implicit conversion of an input (S7-1500)
         return
     ctx.written_actuals.add(id(arg.value))
     formal = param.types[0]
+    if _an_instance_of(ctx, value, param):  # RESET_TIMER("IEC_Timer_DB") (``lang/tia_timing``)
+        return
     if not _writable(ctx, signature, param, arg.value, value) or is_silent(value):
         return
     if is_silent(formal):
@@ -203,6 +218,16 @@ def _same(formal: DataType, value: Type) -> bool:
     if isinstance(formal, COMPOUND):
         return isinstance(value, COMPOUND) and same_type(formal, value)
     return isinstance(value, Elementary) and scalar(value) == scalar(formal)
+
+
+def _an_instance_of(ctx: Context, value: Type, param: Param) -> bool:
+    """An instance (a multi-instance or an instance DB) of one of the system FBs an in/out of
+    TIA's RESET_TIMER/PRESET_TIMER takes (the IEC timers: ``param.types`` lists them)."""
+    if param.section != "IN_OUT" or not all(isinstance(t, BlockType) for t in param.types):
+        return False
+    if isinstance(value, DbRef) and value.number is not None:
+        return ctx.index.db_type_of(value.number) in param.types
+    return len(param.types) > 1 and value in param.types
 
 
 def _writable(

@@ -7,12 +7,13 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nasaq.ir import BlockKind
-from nasaq.lang import number_text
-from nasaq.lang.iec_library import WIDE_FUNCTIONS, wide_variant
+from nasaq.lang import number_text, text_instructions, tia_comm, tia_timing
+from nasaq.lang.iec_library import WIDE_FUNCTIONS
 from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.scl import ast
-from nasaq.lang.scl.typecheck import instructions, library
+from nasaq.lang.scl.typecheck import character_arrays, instructions, library, variant
 from nasaq.lang.scl.typecheck.operands import function_value
+from nasaq.lang.scl.typecheck.rules import start_info
 from nasaq.lang.scl.typecheck.signatures import S5_FUNCTIONS
 from nasaq.lang.scl.typecheck.types import (
     ANYTHING,
@@ -68,6 +69,7 @@ STANDARD = (
     | CONVERSIONS
     | library.NAMES
     | instructions.NAMES
+    | variant.NAMES
 )
 
 
@@ -84,6 +86,8 @@ def call(ctx: Context, node: ast.Call) -> Type:
     callee = node.callee
     if isinstance(callee, ast.Name) and called_by_name(ctx, callee.name):
         upper = callee.name.upper()
+        if upper not in STANDARD:  # SCALE_X_REAL: SCALE_X
+            upper = instructions.typed_form(upper)
         wide = upper in WIDE_FUNCTIONS or wide_conversion(upper)
         if wide and ctx.index.named(callee.name) is None:  # ``nasaq.lang.wide_text``
             if not is_s7_1500(ctx.index.profile):
@@ -91,13 +95,16 @@ def call(ctx: Context, node: ast.Call) -> Type:
             if unsimulated_conversion(upper):
                 return ctx.report("SCL800", node.loc, what=upper)
         classic = not is_s7_1500(ctx.index.profile)
-        if upper in number_text.S7_1500_ONLY and classic and ctx.index.named(callee.name) is None:
+        s7_1500_only = upper in number_text.S7_1500_ONLY or upper in text_instructions.S7_1500_ONLY
+        if s7_1500_only and classic and ctx.index.named(callee.name) is None:
             return ctx.report("SCL500", node.loc, what=upper, profile=ctx.index.profile)
-        if upper == "CONCAT" and len(node.args) > 2 and wide_variant(upper, values) != upper:
-            return ctx.report("SCL800", node.loc, what="CONCAT with more than two inputs")
+        if upper in variant.NAMES and ctx.index.named(callee.name) is None:
+            return variant.call(ctx, upper, node)
         if upper in STANDARD and ctx.index.named(callee.name) is None:
             if upper in instructions.NAMES:
                 return _instruction(ctx, upper, node)
+            if upper in character_arrays.NAMES:  # ATH, Strg_TO_Chars ...: what they reach
+                character_arrays.check(ctx, upper, node)
             return _standard(upper, node, values)
     if isinstance(callee, ast.Member):
         base = ctx.type_of(callee.base)  # FB1.DB1(...): an FB called with its instance DB
@@ -117,7 +124,32 @@ def _instruction(ctx: Context, name: str, node: ast.Call) -> Type:
     from (``instructions``); MOVE_BLK and the like have no value."""
     if name == "TIME_TCK":
         return Elementary("TIME")
+    if name == "RE_TRIGR":  # SFC 43: no parameters, no value
+        for arg in node.args:
+            ctx.report("SCL223", arg.loc, block="RE_TRIGR", name=arg.name or ctx.text(arg.value))
+        return ANYTHING
+    if name in instructions.DTL_CONVERSIONS:
+        return Elementary(instructions.DTL_CONVERSIONS[name])
+    if name in tia_timing.PARAMETERS:  # RUNTIME: LREAL; RESET_TIMER, PRESET_TIMER: no value
+        return tia_timing.PARAMETERS[name][1] or ANYTHING
+    if name in tia_comm.SYSTEM_FUNCTIONS or name == tia_comm.GET_BLOCK_NAME:
+        if name in tia_comm.S7_1500_ONLY and not is_s7_1500(ctx.index.profile):
+            what = tia_comm.SPELLING.get(name, name)
+            return ctx.report("SCL500", node.loc, what=what, profile=ctx.index.profile)
+        if name in tia_comm.SYSTEM_FUNCTIONS:
+            start_info.check_places(ctx, name, node)
+        if name == "RD_SINFO":
+            start_info.check(ctx, node)
+        signature = instructions.signature(name)
+        if signature is None or signature.result is None:
+            return ANYTHING
+        return signature.result
     if name in instructions.TIME_FUNCTIONS:
+        mismatch = instructions.ltime_operands(name, node, ctx.type_of)
+        if mismatch is not None:
+            where, verdict = mismatch
+            assert verdict.code is not None
+            ctx.report(verdict.code, where.loc, **verdict.params)
         value = instructions.time_result(name, node, ctx.type_of)
         return ANYTHING if value is None else value
     if name in instructions.CLOCKS:
@@ -157,7 +189,7 @@ def _standard(name: str, node: ast.Call, values: list[Type]) -> Type:
     if name in S5_FUNCTIONS:
         return S5_FUNCTIONS[name].result or ANYTHING
     if name in library.NAMES:
-        found = library.signature(wide_variant(name, values))
+        found = library.signature(library.chosen(name, node.args, values))
         return found.result if found is not None and found.result is not None else ANYTHING
     if name in STRING_RESULTS:
         return StringType(254)

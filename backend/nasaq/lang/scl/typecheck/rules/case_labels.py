@@ -5,7 +5,8 @@ as an assignment to INT), and each value may occur only once in the whole CASE, 
 ranges (``SCL236``, at the later label). A range ``low..high`` needs ``low <= high``: ``5..1``
 selects nothing (``SCL248``); it takes part in no overlap test. A label may be a named constant
 of the block (``CONST``, TIA's ``VAR CONSTANT``; ``K1``, ``#K1``), as in TIA Portal; any other
-name there is ``SCL700``."""
+name there is ``SCL700``. Under the S7-1500 profile the selector may also be a DINT, UDINT,
+BYTE, WORD or DWORD (a bit string compared as its unsigned integer)."""
 
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ from typing import TYPE_CHECKING
 
 from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.scl import ast
+from nasaq.lang.scl.typecheck import implicit
 from nasaq.lang.scl.typecheck.types import (
     BitsConst,
     IntConst,
@@ -29,8 +31,11 @@ if TYPE_CHECKING:
 INT = Elementary("INT")
 # INT, and the S7-1200/1500's SINT, USINT and UINT (compared as DINTs, ``lower.longs``)
 _SELECTORS = frozenset({"INT", "SINT", "USINT", "UINT"})
-# TIA Portal on S7-1200/1500 takes the 32-bit integers too (LINT/ULINT: not compiled yet)
-_SELECTORS_1500 = _SELECTORS | {"DINT", "UDINT"}
+# TIA Portal on S7-1200/1500 takes the 32- and 64-bit integers too (``lower.wide_control``),
+# and the bit strings (its help, "CASE: Create multiway branch": "an integer or a bit
+# string"), whose labels are then numbers the unsigned integer of their width holds
+_SELECTORS_1500 = _SELECTORS | {"DINT", "UDINT", "LINT", "ULINT"}
+_BIT_SELECTORS = frozenset({"BYTE", "WORD", "DWORD"})
 
 
 def check(ctx: Context, stmt: ast.Stmt) -> None:
@@ -39,6 +44,9 @@ def check(ctx: Context, stmt: ast.Stmt) -> None:
     selector = ctx.type_of(stmt.selector)
     kind = scalar(selector)
     selectors = _SELECTORS_1500 if is_s7_1500(ctx.index.profile) else _SELECTORS
+    if kind in _BIT_SELECTORS and is_s7_1500(ctx.index.profile):  # compared as unsigned
+        kind = implicit.AS_UNSIGNED[kind]
+        stmt.selector = implicit.wrap(ctx, stmt.selector, (f"{scalar(selector)}_TO_{kind}",))
     if not is_silent(selector) and kind not in selectors:
         ctx.report("SCL235", stmt.selector.loc, actual=describe(selector))
     goal = Elementary(kind) if kind in selectors else INT

@@ -1,6 +1,6 @@
-"""Rule: the control variable of FOR is an INT or DINT variable, or an S7-1500 SINT, USINT or
-UINT (``SCL221``); the start, end and step values must be assignable to it (reported as
-assignments are)."""
+"""Rule: the control variable of FOR is an INT or DINT variable, or an S7-1500 SINT, USINT,
+UINT, UDINT, LINT or ULINT (``SCL221``); the start, end and step values must be assignable to
+it (reported as assignments are)."""
 
 from __future__ import annotations
 
@@ -14,8 +14,9 @@ from nasaq.lang.types import Elementary
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
 
-# INT and DINT; the S7-1200/1500's SINT, USINT and UINT too (computed as DINTs, ``lower.longs``)
-_COUNTERS = frozenset({*INTEGERS, "SINT", "USINT", "UINT"})
+# INT and DINT; the S7-1200/1500's SINT, USINT and UINT too (computed as DINTs, ``lower.longs``),
+# and UDINT, LINT, ULINT (``lower.wide_control``)
+_COUNTERS = frozenset({*INTEGERS, "SINT", "USINT", "UINT", "UDINT", "LINT", "ULINT"})
 
 
 def check(ctx: Context, stmt: ast.Stmt) -> None:
@@ -29,6 +30,7 @@ def check(ctx: Context, stmt: ast.Stmt) -> None:
             "SCL221", stmt.variable.loc, name=ctx.text(stmt.variable), actual=describe(found)
         )
         return
-    for value in (stmt.start, stmt.end, stmt.step):
-        if value is not None:
-            store(ctx, stmt.variable, value)
+    stmt.start = store(ctx, stmt.variable, stmt.start)
+    stmt.end = store(ctx, stmt.variable, stmt.end)
+    if stmt.step is not None:
+        stmt.step = store(ctx, stmt.variable, stmt.step)

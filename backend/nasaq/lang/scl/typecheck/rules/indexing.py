@@ -9,8 +9,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.scl import ast
 from nasaq.lang.scl.bind import UNKNOWN
+from nasaq.lang.scl.descriptor import OpenArray
+from nasaq.lang.scl.typecheck import variant
 from nasaq.lang.scl.typecheck.operands import indexed_type
 from nasaq.lang.scl.typecheck.rules.initial_values import is_constant
 from nasaq.lang.scl.typecheck.types import (
@@ -22,7 +25,7 @@ from nasaq.lang.scl.typecheck.types import (
     describe,
     is_silent,
 )
-from nasaq.lang.types import ArrayType, Elementary
+from nasaq.lang.types import ArrayType, Elementary, StringType
 
 if TYPE_CHECKING:
     from nasaq.lang.scl.typecheck.context import Context
@@ -55,6 +58,15 @@ def _element(ctx: Context, base: Type, name: str, indices: list[ast.Expr], where
     values = _indices(ctx, indices)
     if is_silent(base):
         return base
+    if isinstance(base, OpenArray):  # ARRAY[*] (S7-1200/1500): the bounds come at run time
+        return variant.element(ctx, base, name, indices, where)
+    if isinstance(base, StringType) and len(indices) == 1:
+        if values is None:
+            return ERROR
+        chars = ArrayType(((1, max(1, base.length)),), Elementary("CHAR"))
+        if not _within(ctx, name, chars, indices, values):
+            return ERROR
+        return _character(ctx, base, name, where)
     if not isinstance(base, ArrayType):
         return ctx.report("SCL217", where, name=name, type=describe(base))
     given, dims = len(indices), len(base.dims)
@@ -65,6 +77,14 @@ def _element(ctx: Context, base: Type, name: str, indices: list[ast.Expr], where
     if given < dims:  # a row of a matrix (seeds-003b §2.6)
         return ArrayType(base.dims[given:], base.element)
     return ctx.declared(base.element)
+
+
+def _character(ctx: Context, base: StringType, name: str, where: ast.Loc) -> Type:
+    """``#s[i]``: the i-th character of a (W)STRING, 1 first (TIA Portal, S7-1200/1500)."""
+    if not is_s7_1500(ctx.index.profile):
+        what = f"{name}[...] (a character of a {base.name})"
+        return ctx.report("SCL500", where, what=what, profile=ctx.index.profile)
+    return Elementary("WCHAR" if base.wide else "CHAR")
 
 
 def _within(
@@ -93,12 +113,25 @@ def _constant(ctx: Context, index: ast.Expr, value: Type) -> int | None:
     return found if isinstance(found, int) else None
 
 
+# The areas an indexed address may have: the peripheral ones only in bytes, words and dwords.
+_AREAS = frozenset(
+    {
+        *("PIB", "PIW", "PID", "PQB", "PQW", "PQD", "IB", "IW", "ID", "IX", "QB", "QW", "QD"),
+        *("QX", "MB", "MW", "MD", "MX", "I", "Q", "M", "DBX", "DBB", "DBW", "DBD", "DX", "DB"),
+        *("DW", "DD"),
+    }
+)
+
+
 def indexed_address(ctx: Context, node: ast.IndexedAddress) -> Type:
     variable = ctx.variable(node.area)
     # `m[2]` for an array called m: the lexer read an address. `I[i, k]` next to a variable
     # `i : INT` is the input area (names are case-insensitive): only an array is indexed.
     if variable is not None and (isinstance(variable.type, ArrayType) or variable.type == UNKNOWN):
         return _element(ctx, ctx.declared(variable.type), node.area, node.indices, node.loc)
+    if node.area.upper().lstrip("%") not in _AREAS:  # TIA's %MB(#i):P (``build.area_paren``)
+        _indices(ctx, node.indices)
+        return ctx.report("SCL924", node.loc, area=node.area[1:])
     good = _indices(ctx, node.indices) is not None
     value, count = indexed_type(node.area)
     if len(node.indices) != count:

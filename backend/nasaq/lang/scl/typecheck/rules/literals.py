@@ -55,7 +55,10 @@ def literal(ctx: Context, node: ast.Literal) -> Type:
         return _integer(node.text)
     if node.kind == "STRING":
         return CharsConst(_length(node.text[1:-1]))
-    wide = wide_text(node.text.partition("#")[0])
+    prefix, _, body = node.text.partition("#")
+    if prefix.upper() == "STRING" and body.startswith("'"):  # TIA's STRING#'text'
+        return CharsConst(_length(body[1:-1]))
+    wide = wide_text(prefix)
     if wide is not None:  # WSTRING#'..', WCHAR#'.' (issue 20, the functions part)
         if not is_s7_1500(ctx.index.profile):
             return ctx.report("SCL500", node.loc, what=node.text, profile=ctx.index.profile)

@@ -38,8 +38,11 @@ def member(ctx: Context, node: ast.Member) -> Type:
     if iec_calls.instruction(node) is not None and iec_calls.instance_of(ctx.index, base):
         return ANYTHING  # "IEC_Timer_0_DB".TON: the callee of a call (``iec_calls``)
     members = ctx.members(base)
-    if members is None and isinstance(base, DbRef):
-        return ANYTHING  # a DB the sources do not declare (its structure is unknown)
+    if members is None and isinstance(base, DbRef) and base.number is not None:
+        # A DB only the symbol table knows: STEP 7 and TIA refuse it as well (the block must
+        # exist); the error names the DB, so the file's fault is a block from elsewhere.
+        label = unknown_db(ctx, node.base, base.number)
+        return ctx.report("SCL923", part.loc, block=label, name=part.name)
     found_type = None if members is None else members.get(part.name.casefold())
     called = found_type is None and iec_calls.instruction(node) is not None
     if called and any(call.callee is node for call in ctx.outline.calls):
@@ -47,3 +50,10 @@ def member(ctx: Context, node: ast.Member) -> Type:
     if found_type is None:
         return ctx.report("SCL222", part.loc, type=describe(base), name=part.name)
     return ctx.declared(found_type)
+
+
+def unknown_db(ctx: Context, base: ast.Expr, number: int) -> str:
+    """``"Data" (DB 200)`` for a DB named by its symbol, ``DB 200`` for ``DB200``."""
+    if isinstance(base, ast.Address):
+        return f"DB {number}"
+    return f'"{ctx.text(base).strip(chr(34))}" (DB {number})'

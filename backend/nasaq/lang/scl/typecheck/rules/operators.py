@@ -5,7 +5,9 @@ implicit conversions (seeds-003b §2.8, §2.15):
   gives REAL; ``DIV MOD`` integers only; and the time arithmetic of the §2.8 table;
 - comparisons: two numbers, two bit strings, CHAR/STRING, or two values of the same time
   type; the result is BOOL.
-Mixing families (WORD with INT, ``'A' + 'B'``, BOOL + INT) needs an explicit conversion.
+Mixing families (WORD with INT, ``'A' + 'B'``, BOOL + INT) needs an explicit conversion; under
+the S7-1500 profile TIA's readings apply first (``typecheck.implicit``: ``DINT + WORD`` as
+``DINT + UINT``, ``INT XOR INT`` as WORDs).
 An operand whose type is already an error makes the result an error, silently."""
 
 from __future__ import annotations
@@ -14,8 +16,9 @@ from functools import cache
 from typing import TYPE_CHECKING
 
 from nasaq.lang import s7_1500_types as s7_1500
+from nasaq.lang.profiles import is_s7_1500
 from nasaq.lang.scl import ast
-from nasaq.lang.scl.typecheck import time_dint
+from nasaq.lang.scl.typecheck import implicit, time_dint, variant
 from nasaq.lang.scl.typecheck.types import (
     ANYTHING,
     BIT_LIMITS,
@@ -84,6 +87,8 @@ def unary(ctx: Context, node: ast.Unary) -> Type:
 
 
 def binary(ctx: Context, node: ast.Binary) -> Type:
+    if variant.type_test(node) is not None:  # TypeOf(#v) = INT (S7-1200/1500)
+        return variant.check_type_test(ctx, node)
     left = ctx.type_of(node.left)
     right = ctx.type_of(node.right)
     if (type(left) is IntConst) is not (type(right) is IntConst) and (
@@ -99,6 +104,10 @@ def binary(ctx: Context, node: ast.Binary) -> Type:
         b = _constant_as(right.value, a) or b
     elif b in _NEW and type(left) is IntConst:
         a = _constant_as(left.value, b) or a
+    elif a in _NEW and type(right) is BitsConst:  # `ud AND 16#7FFF_FFFF` likewise
+        b = _constant_as(right.value, a)
+    elif b in _NEW and type(left) is BitsConst:
+        a = _constant_as(left.value, b)
     if a is not None and b is not None and not (type(left) is type(right) is IntConst):
         found = _combined(node.op, a, b)  # the common case, in short
     elif left is ERROR or right is ERROR:
@@ -109,10 +118,22 @@ def binary(ctx: Context, node: ast.Binary) -> Type:
         found = _result(node.op, left, right)
     if found is None:
         found = time_dint.combined(ctx, node.op, left, right)  # S7-1500: TIME with DINT
+    if found is None and a is not None and b is not None and is_s7_1500(ctx.index.profile):
+        found = _tia_operands(ctx, node, a, b)  # S7-1500: WORD as UINT, INT as WORD ...
     if found is None:
         return ctx.report(
             "SCL211", node.loc, op=node.op, left=describe(left), right=describe(right)
         )
+    return found
+
+
+def _tia_operands(ctx: Context, node: ast.Binary, a: str, b: str) -> Elementary | None:
+    """``DINT + WORD``, ``INT XOR INT`` ...: computed as TIA computes them without the IEC
+    check (``implicit.operand_types``), the operands converted in the tree."""
+    types = implicit.operand_types(node.op, a, b)
+    found = _combined(node.op, *types) if types is not None else None
+    if types is not None and found is not None:
+        implicit.convert_operands(ctx, node, types)
     return found
 
 
@@ -222,16 +243,17 @@ def _constant_as(value: int, kind: str) -> str | None:
 
 def _combined_1500(op: str, a: str, b: str, common: str | None) -> Elementary | None:
     """An operation with an S7-1200/1500 type (``typecheck.s7_1500``): the result is the common
-    type (``SINT + SINT`` a SINT, ``INT + UINT`` a DINT); ``**`` is an LREAL when an operand is,
+    type (``SINT + SINT`` a SINT, ``INT + UINT`` a DINT); ``**`` is an LREAL when an operand is
+    an LREAL, LINT or ULINT,
     ``DIV``/``MOD`` integers only; LTIME works as TIME does, in nanoseconds."""
     if op in LOGIC:
         return Elementary(common) if common in s7_1500.BIT_STRINGS else None
     if op in COMPARE:
         comparable = common in s7_1500.ALL_NUMBERS or common in s7_1500.BIT_STRINGS
         return BOOL if comparable or common == "LTIME" else None
-    if op == "**":
-        if a in s7_1500.ALL_NUMBERS and b in s7_1500.ALL_NUMBERS:
-            return Elementary("LREAL" if "LREAL" in (a, b) else "REAL")
+    if op == "**":  # of a 64-bit integer too an LREAL (computed by EXPT_LREAL: REAL would
+        if a in s7_1500.ALL_NUMBERS and b in s7_1500.ALL_NUMBERS:  # lose its digits)
+            return Elementary("LREAL" if {"LREAL", "LINT", "ULINT"} & {a, b} else "REAL")
         return None
     if common == "LTIME" and op in ("+", "-"):
         return Elementary("LTIME")
