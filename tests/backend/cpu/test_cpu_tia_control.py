@@ -4,10 +4,10 @@ PID_Compact V1.x, RUNTIME, RESET_TIMER, PRESET_TIMER and CTRL_HSC without counte
 from __future__ import annotations
 
 import pytest
+from cpu_run import read, real, run
 
 from nasaq.cpu import Cpu, iec_blocks
-from nasaq.cpu.profile import Profile
-from nasaq.headless.addresses import as_real, parse_address, signed
+from nasaq.headless.addresses import parse_address
 from nasaq.ir import Direct
 from nasaq.lang.stl import SourceFile, compile_sources
 from nasaq.lang.tia_control import PID_COMPACT
@@ -16,30 +16,14 @@ CYCLE_MS = 10
 
 
 def build(source: str) -> Cpu:
+    """The S7-1500 program started (OB100, RUN), no cycle run yet."""
     result = compile_sources([SourceFile("prog.scl", source)], profile="S7-1500")
-    errors = [f"{d.code} {d.message}" for d in result.diagnostics if d.severity == "error"]
-    assert not errors, errors
-    cpu = Cpu(result.program, profile=Profile("S7-1500"), cycle_ms=CYCLE_MS)
-    cpu.start()
-    assert cpu.mode == "RUN", cpu.stop_reason
-    return cpu
+    return run(result, scans=0, profile="S7-1500", cycle_ms=CYCLE_MS)
 
 
 def scan(cpu: Cpu, count: int = 1) -> None:
     cpu.run(count)
     assert cpu.mode == "RUN", cpu.stop_reason
-
-
-def value(cpu: Cpu, text: str) -> int:
-    address = parse_address(text)
-    assert isinstance(address, Direct)
-    return signed(cpu.read(address), address.width)
-
-
-def real(cpu: Cpu, text: str) -> float:
-    address = parse_address(text)
-    assert isinstance(address, Direct)
-    return as_real(cpu.read(address))
 
 
 def write_real(cpu: Cpu, text: str, number: float) -> None:
@@ -90,8 +74,8 @@ def pid(setpoint: float, process: float) -> Cpu:
 def test_pid_compact_starts_in_the_mode_of_its_instance_and_acts_on_the_error() -> None:
     cpu = pid(50.0, 40.0)
     scan(cpu)
-    assert value(cpu, "MW24") == 3  # automatic (sb_RunModeByStartup is TRUE by default)
-    assert value(cpu, "MD26") == 0
+    assert read(cpu, "MW24") == 3  # automatic (sb_RunModeByStartup is TRUE by default)
+    assert read(cpu, "MD26") == 0
     assert real(cpu, "MD30") == pytest.approx(40.0)
     first = real(cpu, "MD20")
     # P = 0.5 * (50 - 40) = 5; I after the first sample (0.1 s, the initial cycle) = 0.25
@@ -121,7 +105,7 @@ def test_pid_compact_inverted_control_and_manual_mode() -> None:
     write_real(cpu, member("ManualValue"), 33.0)
     cpu.write(parse_address("M8.0"), 1)  # type: ignore[arg-type]
     scan(cpu)
-    assert value(cpu, "MW24") == 4
+    assert read(cpu, "MW24") == 4
     assert real(cpu, "MD20") == pytest.approx(33.0)
     write_real(cpu, member("ManualValue"), 95.0)
     scan(cpu)
@@ -130,7 +114,7 @@ def test_pid_compact_inverted_control_and_manual_mode() -> None:
     scan(cpu)
     cpu.write(parse_address("M8.0"), 0)  # type: ignore[arg-type]
     scan(cpu)
-    assert value(cpu, "MW24") == 3  # back to automatic, bumplessly
+    assert read(cpu, "MW24") == 3  # back to automatic, bumplessly
     assert real(cpu, "MD20") == pytest.approx(33.0, abs=0.1)
 
 
@@ -139,20 +123,20 @@ def test_pid_compact_reset_and_process_value_limits() -> None:
     scan(cpu)
     cpu.write(parse_address("M8.1"), 1)  # type: ignore[arg-type]
     scan(cpu)
-    assert value(cpu, "MW24") == 0
+    assert read(cpu, "MW24") == 0
     assert real(cpu, "MD20") == 0.0
     cpu.write(parse_address("M8.1"), 0)  # type: ignore[arg-type]
     scan(cpu)
-    assert value(cpu, "MW24") == 3  # the falling edge restarts in the mode of i_Mode
+    assert read(cpu, "MW24") == 3  # the falling edge restarts in the mode of i_Mode
     write_real(cpu, member("Input"), 500.0)  # above r_Pv_Hlm (120.0)
     scan(cpu)
-    assert value(cpu, "MD26") == 0x0001
-    assert value(cpu, "MW24") == 0
+    assert read(cpu, "MD26") == 0x0001
+    assert read(cpu, "MW24") == 0
     assert real(cpu, "MD20") == 0.0
     write_real(cpu, member("Input"), 40.0)
     scan(cpu)
-    assert value(cpu, "MD26") == 0  # the error has gone, the controller stays inactive
-    assert value(cpu, "MW24") == 0
+    assert read(cpu, "MD26") == 0  # the error has gone, the controller stays inactive
+    assert read(cpu, "MW24") == 0
 
 
 def test_pid_compact_as_a_multi_instance_with_inverted_action() -> None:
@@ -181,7 +165,7 @@ END_ORGANIZATION_BLOCK
 """
     )
     scan(cpu, 3)
-    assert value(cpu, "MW24") == 3
+    assert read(cpu, "MW24") == 3
     assert real(cpu, "MD20") == pytest.approx(20.0)  # -2 * (20 - 30): cooling opens up
 
 
@@ -241,13 +225,13 @@ END_ORGANIZATION_BLOCK
 def test_reset_timer_clears_a_running_timer_and_preset_timer_sets_pt() -> None:
     cpu = build(TIMER_PROGRAM)
     scan(cpu, 19)
-    assert value(cpu, "MD50") == 18 * CYCLE_MS
-    assert value(cpu, "MD56") == 250  # PRESET_TIMER in a structure member
+    assert read(cpu, "MD50") == 18 * CYCLE_MS
+    assert read(cpu, "MD56") == 250  # PRESET_TIMER in a structure member
     scan(cpu)
-    assert value(cpu, "MD50") == 0  # RESET_TIMER after the call at the 20th scan
-    assert value(cpu, "M54.0") == 0
+    assert read(cpu, "MD50") == 0  # RESET_TIMER after the call at the 20th scan
+    assert read(cpu, "M54.0") == 0
     scan(cpu, 2)
-    assert value(cpu, "MD50") == CYCLE_MS  # IN still TRUE: the timer runs again
+    assert read(cpu, "MD50") == CYCLE_MS  # IN still TRUE: the timer runs again
 
 
 def test_ctrl_hsc_without_counter_hardware_answers_no_hsc() -> None:
@@ -269,8 +253,8 @@ END_ORGANIZATION_BLOCK
 """
     )
     scan(cpu)
-    assert value(cpu, "MW62") & 0xFFFF == 0x80A1
-    assert value(cpu, "M60.0") == 0
+    assert read(cpu, "MW62") & 0xFFFF == 0x80A1
+    assert read(cpu, "M60.0") == 0
 
 
 def test_reset_timer_on_a_single_instance_db_and_a_tp_time() -> None:
@@ -305,9 +289,9 @@ END_ORGANIZATION_BLOCK
 """
     )
     scan(cpu, 5)
-    assert value(cpu, "MD78") == 4 * CYCLE_MS
-    assert value(cpu, "MD74") == 4 * CYCLE_MS
+    assert read(cpu, "MD78") == 4 * CYCLE_MS
+    assert read(cpu, "MD74") == 4 * CYCLE_MS
     cpu.write(parse_address("M70.0"), 1)  # type: ignore[arg-type]
     scan(cpu)
-    assert value(cpu, "MD78") == 0
-    assert value(cpu, "MD74") == 0
+    assert read(cpu, "MD78") == 0
+    assert read(cpu, "MD74") == 0

@@ -8,9 +8,9 @@ import itertools
 import struct
 
 import pytest
+from cpu_run import run
 
 from nasaq.cpu import Cpu, iec_blocks
-from nasaq.cpu.profile import Profile
 from nasaq.cpu.tia_filters import ERROR_CYCLE_TIME, ERROR_DAMPING, ERROR_LAG
 from nasaq.headless.addresses import as_real, parse_address
 from nasaq.ir import Direct
@@ -57,13 +57,9 @@ END_ORGANIZATION_BLOCK
 
 
 def build(source: str) -> Cpu:
+    """The S7-1500 program started (OB100, RUN), no cycle run yet."""
     result = compile_sources([SourceFile("prog.scl", source)], profile="S7-1500")
-    errors = [f"{d.code} {d.message}" for d in result.diagnostics if d.severity == "error"]
-    assert not errors, errors
-    cpu = Cpu(result.program, profile=Profile("S7-1500"), cycle_ms=CYCLE_MS)
-    cpu.start()
-    assert cpu.mode == "RUN", cpu.stop_reason
-    return cpu
+    return run(result, scans=0, profile="S7-1500", cycle_ms=CYCLE_MS)
 
 
 def scan(cpu: Cpu, count: int = 1) -> None:

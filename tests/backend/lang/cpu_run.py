@@ -10,12 +10,12 @@ from nasaq.ir import Direct
 from nasaq.lang.stl import CompileResult
 
 
-def run(result: CompileResult, scans: int = 1, profile: str = "S7-300") -> Cpu:
-    """The compiled program (no errors) on a CPU of ``profile``: started (OB100, RUN) and
-    ``scans`` cycles."""
+def run(result: CompileResult, scans: int = 1, profile: str = "S7-300", cycle_ms: int = 10) -> Cpu:
+    """The compiled program (no errors) on a CPU of ``profile`` with a virtual cycle of
+    ``cycle_ms``: started (OB100, RUN) and ``scans`` cycles."""
     errors = [f"{d.code} {d.span} {d.message}" for d in result.diagnostics if d.severity == "error"]
     assert not errors, errors
-    cpu = Cpu(result.program, profile=Profile(profile), cycle_ms=10)
+    cpu = Cpu(result.program, profile=Profile(profile), cycle_ms=cycle_ms)
     cpu.start()
     assert cpu.mode == "RUN", cpu.stop_reason
     cpu.run(scans)
