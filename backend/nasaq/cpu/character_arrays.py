@@ -88,7 +88,12 @@ def _ret(ref: Ref, code: int) -> int:
     return 1 if code == _OK else 0
 
 
-def _ath(p: list[Ref], memory: Memory, frame: bytearray) -> int:
+def _operands(
+    p: list[Ref], memory: Memory, frame: bytearray, out_bytes: Callable[[int], int]
+) -> tuple[int, bytearray, int, bytearray, int] | int:
+    """ATH/HTA's N, IN and OUT: (N, IN's buffer and first byte, OUT's), or the RET_VAL error
+    already written: a pointer that reaches nothing, N beyond IN, OUT shorter than
+    ``out_bytes(N)``."""
     n, source, target = _int(p[1]), reach(p[0], memory, frame), reach(p[2], memory, frame)
     if source is None:
         return _ret(p[3], _IN_POINTER)
@@ -98,8 +103,16 @@ def _ath(p: list[Ref], memory: Memory, frame: bytearray) -> int:
     if not 0 <= n <= length:
         return _ret(p[3], _IN_SHORT)
     out, at, room, _code = target
-    if room < (n + 1) // 2:
+    if room < out_bytes(n):
         return _ret(p[3], _OUT_SHORT)
+    return n, buf, start, out, at
+
+
+def _ath(p: list[Ref], memory: Memory, frame: bytearray) -> int:
+    operands = _operands(p, memory, frame, lambda n: (n + 1) // 2)
+    if isinstance(operands, int):
+        return operands
+    n, buf, start, out, at = operands
     code, digits = _OK, []
     for char in buf[start : start + n].decode("latin-1").upper():
         if char in _DIGITS:
@@ -115,17 +128,10 @@ def _ath(p: list[Ref], memory: Memory, frame: bytearray) -> int:
 
 
 def _hta(p: list[Ref], memory: Memory, frame: bytearray) -> int:
-    n, source, target = _int(p[1]), reach(p[0], memory, frame), reach(p[2], memory, frame)
-    if source is None:
-        return _ret(p[3], _IN_POINTER)
-    if target is None:
-        return _ret(p[3], _OUT_POINTER)
-    buf, start, length, _code = source
-    if not 0 <= n <= length:
-        return _ret(p[3], _IN_SHORT)
-    out, at, room, _code = target
-    if room < 2 * n:
-        return _ret(p[3], _OUT_SHORT)
+    operands = _operands(p, memory, frame, lambda n: 2 * n)
+    if isinstance(operands, int):
+        return operands
+    n, buf, start, out, at = operands
     text = "".join(f"{value:02X}" for value in buf[start : start + n])
     out[at : at + 2 * n] = text.encode("ascii")
     return _ret(p[3], _OK)

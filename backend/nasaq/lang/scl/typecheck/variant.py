@@ -196,10 +196,16 @@ def call(ctx: Context, name: str, node: ast.Call) -> Type:
     return BOOL if name == "IS_ARRAY" else UDINT
 
 
-def _copy(ctx: Context, name: str, node: ast.Call, args: list[ast.Arg], values: list[Type]) -> Type:
-    """Serialize, Deserialize, VariantGet, VariantPut, MOVE_BLK_VARIANT: every parameter given
-    (by name, or in TIA's order), places that are variables, the numbers integers."""
-    _source, _target, order = COPIES[name]
+def _given(
+    ctx: Context,
+    spelling: str,
+    node: ast.Call,
+    args: list[ast.Arg],
+    values: list[Type],
+    order: tuple[str, ...],
+) -> dict[str, tuple[ast.Expr, Type]] | Type:
+    """The actuals by parameter name (named, or in TIA's ``order``), every one given once;
+    else the reported error (SCL555 an unknown or repeated one, SCL227 one missing)."""
     given: dict[str, tuple[ast.Expr, Type]] = {}
     for position, (arg, value) in enumerate(zip(args, values, strict=True)):
         key = (arg.name or (order[position] if position < len(order) else "")).upper()
@@ -207,7 +213,7 @@ def _copy(ctx: Context, name: str, node: ast.Call, args: list[ast.Arg], values: 
             return ctx.report(
                 "SCL555",
                 arg.value.loc,
-                function=name_spelling(name),
+                function=spelling,
                 expected=", ".join(order),
                 param=arg.name or _ordinal(position),
                 actual=ctx.text(arg.value),
@@ -215,7 +221,17 @@ def _copy(ctx: Context, name: str, node: ast.Call, args: list[ast.Arg], values: 
         given[key] = (arg.value, value)
     missing = [key for key in order if key not in given]
     if missing:
-        return ctx.report("SCL227", node.loc, block=name_spelling(name), names=", ".join(missing))
+        return ctx.report("SCL227", node.loc, block=spelling, names=", ".join(missing))
+    return given
+
+
+def _copy(ctx: Context, name: str, node: ast.Call, args: list[ast.Arg], values: list[Type]) -> Type:
+    """Serialize, Deserialize, VariantGet, VariantPut, MOVE_BLK_VARIANT: every parameter given
+    (by name, or in TIA's order), places that are variables, the numbers integers."""
+    _source, _target, order = COPIES[name]
+    given = _given(ctx, name_spelling(name), node, args, values, order)
+    if not isinstance(given, dict):
+        return given
     for key in order:
         expr, value = given[key]
         if is_silent(value):
@@ -256,23 +272,9 @@ def _memory(
 ) -> Type:
     """PEEK/POKE: every parameter (by name or in order), the area a constant TIA knows, the
     DB a DB_ANY, a DB or a number."""
-    order = MEMORY_PARAMS[name]
-    given: dict[str, tuple[ast.Expr, Type]] = {}
-    for position, (arg, value) in enumerate(zip(args, values, strict=True)):
-        key = (arg.name or (order[position] if position < len(order) else "")).upper()
-        if key not in order or key in given:
-            return ctx.report(
-                "SCL555",
-                arg.value.loc,
-                function=name,
-                expected=", ".join(order),
-                param=arg.name or _ordinal(position),
-                actual=ctx.text(arg.value),
-            )
-        given[key] = (arg.value, value)
-    missing = [key for key in order if key not in given]
-    if missing:
-        return ctx.report("SCL227", node.loc, block=name, names=", ".join(missing))
+    given = _given(ctx, name, node, args, values, MEMORY_PARAMS[name])
+    if not isinstance(given, dict):
+        return given
     area_node, _area = given["AREA"]
     area = memory_area(ctx, area_node)
     if area is None:
